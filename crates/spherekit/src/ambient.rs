@@ -1,0 +1,178 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Vectors of the ambient Euclidean space ℝ^(m+1) that contains S^m.
+
+use core::fmt::Debug;
+use core::ops::{Add, AddAssign, Mul, Neg, Sub};
+
+use glam::{DVec3, DVec4};
+
+/// A vector of the Euclidean space that contains a sphere.
+///
+/// Points, tangent vectors and derivatives of curves are all expressed in these ambient
+/// coordinates: a tangent vector at `p` is an ambient vector `v` with `p · v = 0`.
+pub trait Ambient:
+    Clone
+    + Debug
+    + PartialEq
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<f64, Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+{
+    /// The Euclidean dot product.
+    fn dot(&self, other: &Self) -> f64;
+
+    /// The zero vector of the same dimension as `self`.
+    #[must_use]
+    fn zeros_like(&self) -> Self;
+
+    /// The number of coordinates.
+    fn dim(&self) -> usize;
+
+    /// Coordinates in storage order (for `DVec4` ambient quaternions: `x, y, z, w`).
+    fn to_vec(&self) -> Vec<f64>;
+
+    /// The Euclidean length.
+    fn length(&self) -> f64 {
+        self.dot(self).sqrt()
+    }
+
+    /// `true` when every coordinate is finite.
+    fn is_finite(&self) -> bool;
+}
+
+impl Ambient for DVec3 {
+    #[inline]
+    fn dot(&self, other: &Self) -> f64 {
+        DVec3::dot(*self, *other)
+    }
+    #[inline]
+    fn zeros_like(&self) -> Self {
+        Self::ZERO
+    }
+    fn dim(&self) -> usize {
+        3
+    }
+    fn to_vec(&self) -> Vec<f64> {
+        self.to_array().to_vec()
+    }
+    #[inline]
+    fn is_finite(&self) -> bool {
+        DVec3::is_finite(*self)
+    }
+}
+
+impl Ambient for DVec4 {
+    #[inline]
+    fn dot(&self, other: &Self) -> f64 {
+        DVec4::dot(*self, *other)
+    }
+    #[inline]
+    fn zeros_like(&self) -> Self {
+        Self::ZERO
+    }
+    fn dim(&self) -> usize {
+        4
+    }
+    fn to_vec(&self) -> Vec<f64> {
+        self.to_array().to_vec()
+    }
+    #[inline]
+    fn is_finite(&self) -> bool {
+        DVec4::is_finite(*self)
+    }
+}
+
+/// A vector of ℝⁿ whose dimension is chosen at run time: the ambient space of [`SnPoint`](crate::SnPoint).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct VecN(Vec<f64>);
+
+impl VecN {
+    /// Wraps the coordinates.
+    #[must_use]
+    pub fn new(coords: Vec<f64>) -> Self {
+        Self(coords)
+    }
+
+    /// The coordinates.
+    #[must_use]
+    pub fn as_slice(&self) -> &[f64] {
+        &self.0
+    }
+
+    fn zip_with(mut self, other: &Self, f: impl Fn(f64, f64) -> f64) -> Self {
+        debug_assert_eq!(self.0.len(), other.0.len(), "dimension mismatch");
+        for (a, b) in self.0.iter_mut().zip(&other.0) {
+            *a = f(*a, *b);
+        }
+        self
+    }
+}
+
+impl From<Vec<f64>> for VecN {
+    fn from(v: Vec<f64>) -> Self {
+        Self(v)
+    }
+}
+
+impl Add for VecN {
+    type Output = Self;
+    fn add(self, rhs: Self) -> Self {
+        self.zip_with(&rhs, |a, b| a + b)
+    }
+}
+
+impl AddAssign for VecN {
+    fn add_assign(&mut self, rhs: Self) {
+        debug_assert_eq!(self.0.len(), rhs.0.len(), "dimension mismatch");
+        for (a, b) in self.0.iter_mut().zip(rhs.0) {
+            *a += b;
+        }
+    }
+}
+
+impl Sub for VecN {
+    type Output = Self;
+    fn sub(self, rhs: Self) -> Self {
+        self.zip_with(&rhs, |a, b| a - b)
+    }
+}
+
+impl Mul<f64> for VecN {
+    type Output = Self;
+    fn mul(mut self, rhs: f64) -> Self {
+        for a in &mut self.0 {
+            *a *= rhs;
+        }
+        self
+    }
+}
+
+impl Neg for VecN {
+    type Output = Self;
+    fn neg(self) -> Self {
+        self * -1.0
+    }
+}
+
+impl Ambient for VecN {
+    fn dot(&self, other: &Self) -> f64 {
+        debug_assert_eq!(self.0.len(), other.0.len(), "dimension mismatch");
+        self.0.iter().zip(&other.0).map(|(a, b)| a * b).sum()
+    }
+    fn zeros_like(&self) -> Self {
+        Self(vec![0.0; self.0.len()])
+    }
+    fn dim(&self) -> usize {
+        self.0.len()
+    }
+    fn to_vec(&self) -> Vec<f64> {
+        self.0.clone()
+    }
+    fn is_finite(&self) -> bool {
+        self.0.iter().all(|a| a.is_finite())
+    }
+}

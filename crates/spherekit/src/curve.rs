@@ -1,0 +1,71 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The curve trait: a parametrised curve on a sphere with exact derivatives.
+
+use crate::manifold::Manifold;
+
+/// Which one-sided limit to take at a joint of a piecewise curve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Side {
+    /// The piece that ends at the joint.
+    Left,
+    /// The piece that starts at the joint (the default).
+    #[default]
+    Right,
+}
+
+/// A point of a curve with its first and second derivatives.
+///
+/// The derivatives are taken with respect to the curve's own parameter `t` and are vectors of
+/// the ambient space: `velocity` is tangent to the sphere at `point`, `acceleration` is the full
+/// ambient second derivative (its normal part is `−|velocity|²·point`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Jet<P: Manifold> {
+    /// The point `c(t)`.
+    pub point: P,
+    /// `c′(t)`.
+    pub velocity: P::Vector,
+    /// `c″(t)`.
+    pub acceleration: P::Vector,
+}
+
+/// A parametrised curve on a sphere with analytic first and second derivatives.
+///
+/// # Domain policy
+///
+/// Every curve is defined on a closed interval [`domain`](Curve::domain) `= [t0, t1]`.
+/// Parameters outside it are **clamped**: `eval(t)` for `t < t0` is `eval(t0)`, and the jet there
+/// is the one-sided jet at `t0` (derivatives are not zeroed). A NaN parameter is a caller bug
+/// (checked in debug builds); release builds treat it as `t0` so that no NaN is produced.
+pub trait Curve {
+    /// The sphere the curve lies on.
+    type Point: Manifold;
+
+    /// The parameter interval `[t0, t1]`, `t0 < t1`.
+    fn domain(&self) -> [f64; 2];
+
+    /// The parameters where the curve is made of different pieces, including both ends of the
+    /// domain, increasing. A one-piece curve returns `[t0, t1]`.
+    fn joints(&self) -> &[f64];
+
+    /// The point and derivatives at `t`; at a joint, the one-sided limit from `side`.
+    fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point>;
+
+    /// The point and derivatives at `t` (right-sided at joints).
+    fn jet(&self, t: f64) -> Jet<Self::Point> {
+        self.jet_at(t, Side::Right)
+    }
+
+    /// The point at `t`.
+    fn eval(&self, t: f64) -> Self::Point {
+        self.jet(t).point
+    }
+}
+
+/// Clamps `t` to `[t0, t1]`, mapping NaN to `t0` (see the domain policy of [`Curve`]).
+#[inline]
+pub(crate) fn clamp_param(t: f64, [t0, t1]: [f64; 2]) -> f64 {
+    debug_assert!(!t.is_nan(), "curve evaluated at NaN");
+    if t.is_nan() { t0 } else { t.clamp(t0, t1) }
+}

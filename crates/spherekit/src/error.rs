@@ -1,0 +1,128 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Typed errors. Messages name the offending input by the scene field it comes from
+//! (`points[3]`, `knots[2]`), so the CLI and the browser can show them unchanged.
+
+use core::fmt;
+
+/// Why a vector could not be made into a point of a sphere.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PointError {
+    /// A coordinate is NaN or infinite.
+    NonFinite,
+    /// All coordinates are zero (or subnormal), so there is no direction.
+    ZeroLength,
+    /// The number of coordinates does not match the sphere.
+    WrongDimension {
+        /// Coordinates the sphere needs.
+        expected: usize,
+        /// Coordinates given.
+        got: usize,
+    },
+}
+
+impl fmt::Display for PointError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NonFinite => f.write_str("has a non-finite coordinate"),
+            Self::ZeroLength => f.write_str("has zero length and cannot be normalised"),
+            Self::WrongDimension { expected, got } => {
+                write!(f, "has {got} coordinates, expected {expected}")
+            }
+        }
+    }
+}
+
+impl core::error::Error for PointError {}
+
+/// Why a curve could not be built.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SplineError {
+    /// The construction needs at least `min` points.
+    TooFewPoints {
+        /// The minimum.
+        min: usize,
+        /// Points given.
+        got: usize,
+    },
+    /// Input point `index` is not a valid point of the sphere.
+    InvalidPoint {
+        /// Index into the input points.
+        index: usize,
+        /// What is wrong with it.
+        reason: PointError,
+    },
+    /// Points `index` and `index + 1` are antipodal: the geodesic between them is not unique.
+    Antipodal {
+        /// Index of the first of the two points.
+        index: usize,
+    },
+    /// Points `index` and `index + 1` coincide where the construction needs distinct points.
+    Coincident {
+        /// Index of the first of the two points.
+        index: usize,
+    },
+    /// Knot `index` is not finite.
+    InvalidKnot {
+        /// Index into the knots.
+        index: usize,
+    },
+    /// Knot `index` is not greater than the one before it.
+    KnotsNotIncreasing {
+        /// Index into the knots.
+        index: usize,
+    },
+    /// The number of knots does not fit the number of points.
+    KnotCount {
+        /// Knots the construction needs.
+        expected: usize,
+        /// Knots given.
+        got: usize,
+    },
+    /// A method parameter is out of its range.
+    InvalidParameter {
+        /// The parameter's name as in the scene's `params`.
+        name: &'static str,
+        /// What is wrong, for example `"must be positive"`.
+        reason: String,
+    },
+}
+
+impl fmt::Display for SplineError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::TooFewPoints { min, got } => {
+                write!(
+                    f,
+                    "points: this method needs at least {min} points, got {got}"
+                )
+            }
+            Self::InvalidPoint { index, reason } => write!(f, "points[{index}] {reason}"),
+            Self::Antipodal { index } => write!(
+                f,
+                "points[{index}] and points[{}] are antipodal: the geodesic between them is not unique",
+                index + 1
+            ),
+            Self::Coincident { index } => write!(
+                f,
+                "points[{index}] and points[{}] coincide: this method needs distinct consecutive points",
+                index + 1
+            ),
+            Self::InvalidKnot { index } => write!(f, "knots[{index}] is not finite"),
+            Self::KnotsNotIncreasing { index } => write!(
+                f,
+                "knots[{index}] is not greater than knots[{}]: knots must be strictly increasing",
+                index.saturating_sub(1)
+            ),
+            Self::KnotCount { expected, got } => {
+                write!(f, "knots: expected {expected} knots, got {got}")
+            }
+            Self::InvalidParameter { name, reason } => write!(f, "params.{name} {reason}"),
+        }
+    }
+}
+
+impl core::error::Error for SplineError {}

@@ -1,0 +1,235 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The piecewise geodesic (slerp) and piecewise normalised-linear (nlerp) curves through points.
+
+use crate::ambient::Ambient;
+use crate::curve::{Curve, Jet, Side};
+use crate::error::SplineError;
+use crate::knots::Knots;
+use crate::manifold::{Manifold, geodesic_frame};
+
+/// Checks that there are at least `min` points and no antipodal neighbours.
+pub(crate) fn check_chain<P: Manifold>(points: &[P], min: usize) -> Result<(), SplineError> {
+    if points.len() < min {
+        return Err(SplineError::TooFewPoints {
+            min,
+            got: points.len(),
+        });
+    }
+    match points.windows(2).position(|w| w[0].is_antipodal(&w[1])) {
+        Some(index) => Err(SplineError::Antipodal { index }),
+        None => Ok(()),
+    }
+}
+
+/// One great-circle arc `cos(sθ)·p + sin(sθ)·e`, `s ∈ [0, 1]`, stored with its angular rate.
+#[derive(Clone, Debug)]
+struct Arc<V> {
+    start: V,
+    /// Unit tangent at `start` towards the end (zero for a zero-length arc).
+    direction: V,
+    theta: f64,
+    /// `θ / h`: radians per unit of the global parameter.
+    rate: f64,
+}
+
+/// The piecewise geodesic through points `p₀ … pₙ` at knots `u₀ < … < uₙ` (spherical linear
+/// interpolation between consecutive points).
+///
+/// On `[uᵢ, uᵢ₊₁]`, with `s = (t − uᵢ)/hᵢ`, `θᵢ = ∠(pᵢ, pᵢ₊₁)` and `eᵢ` the unit tangent at `pᵢ`
+/// towards `pᵢ₊₁`:
+///
+/// ```text
+/// c(t)  = cos(sθᵢ)·pᵢ + sin(sθᵢ)·eᵢ   = slerp(pᵢ, pᵢ₊₁; s)
+/// c′(t) = (θᵢ/hᵢ)·(−sin(sθᵢ)·pᵢ + cos(sθᵢ)·eᵢ)
+/// c″(t) = −(θᵢ/hᵢ)²·c(t)
+/// ```
+///
+/// Each piece has constant speed θᵢ/hᵢ; the curve is C⁰ at the knots. On S³ the keys are used
+/// as given (no sign flips): canonicalise them first with [`unflip`](crate::unflip) for the
+/// shortest rotations. Works on any sphere ([`S2Point`](crate::S2Point),
+/// [`UnitQuat`](crate::UnitQuat), [`SnPoint`](crate::SnPoint)).
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{Curve, GeodesicSpline, Manifold, S2Point};
+///
+/// let c = GeodesicSpline::try_new(vec![S2Point::X, S2Point::Y, S2Point::Z], None).unwrap();
+/// assert_eq!(c.domain(), [0.0, 2.0]);
+/// assert_eq!(c.eval(1.0), S2Point::Y);
+/// // Constant speed: a quarter of the first arc at t = 0.25.
+/// let d = S2Point::X.dist(&c.eval(0.25));
+/// assert!((d - core::f64::consts::FRAC_PI_8).abs() < 1e-15);
+/// ```
+#[derive(Clone, Debug)]
+pub struct GeodesicSpline<P: Manifold> {
+    points: Vec<P>,
+    knots: Knots,
+    arcs: Vec<Arc<P::Vector>>,
+}
+
+impl<P: Manifold> GeodesicSpline<P> {
+    /// Builds the curve; `knots` defaults to `0, 1, …, n`.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 2 points, [`SplineError::Antipodal`] for
+    /// antipodal neighbours, and the knot errors of [`Knots::or_uniform`].
+    pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_chain(&points, 2)?;
+        let knots = Knots::or_uniform(knots, points.len())?;
+        let arcs = points
+            .windows(2)
+            .enumerate()
+            .map(|(i, w)| {
+                let start = w[0].to_vector();
+                let (theta, direction) = geodesic_frame(&start, &w[1].to_vector())
+                    .ok_or(SplineError::Antipodal { index: i })?;
+                Ok(Arc {
+                    start,
+                    direction,
+                    theta,
+                    rate: theta / knots.width(i),
+                })
+            })
+            .collect::<Result<_, SplineError>>()?;
+        Ok(Self {
+            points,
+            knots,
+            arcs,
+        })
+    }
+
+    /// The points interpolated at the knots.
+    #[must_use]
+    pub fn points(&self) -> &[P] {
+        &self.points
+    }
+}
+
+impl<P: Manifold> Curve for GeodesicSpline<P> {
+    type Point = P;
+
+    fn domain(&self) -> [f64; 2] {
+        self.knots.domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        self.knots.as_slice()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
+        let (i, s) = self.knots.locate(t, side);
+        let arc = &self.arcs[i];
+        let point = if s == 1.0 {
+            self.points[i + 1].clone()
+        } else {
+            self.points[i].slerp(&self.points[i + 1], s)
+        };
+        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
+        let velocity = (arc.direction.clone() * cs - arc.start.clone() * sn) * arc.rate;
+        let acceleration = point.to_vector() * -(arc.rate * arc.rate);
+        Jet {
+            point,
+            velocity,
+            acceleration,
+        }
+    }
+
+    fn eval(&self, t: f64) -> P {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        if s == 1.0 {
+            return self.points[i + 1].clone();
+        }
+        self.points[i].slerp(&self.points[i + 1], s)
+    }
+}
+
+/// The piecewise normalised-linear curve (nlerp) through points `p₀ … pₙ` at knots
+/// `u₀ < … < uₙ`.
+///
+/// On `[uᵢ, uᵢ₊₁]`, with `s = (t − uᵢ)/hᵢ`, `v(t) = (1 − s)·pᵢ + s·pᵢ₊₁` and `n = |v|`:
+///
+/// ```text
+/// c(t)  = v / n
+/// c′(t) = (v′ − c·n′)/n,           v′ = (pᵢ₊₁ − pᵢ)/hᵢ,  n′ = c·v′
+/// c″(t) = −(n″·c + 2n′·c′)/n,      n″ = c′·v′
+/// ```
+///
+/// It traces the same great-circle arcs as [`GeodesicSpline`] but not at constant speed: it is
+/// fastest at the middle of each piece. Cheap, and a common baseline in animation.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{Curve, Manifold, NlerpSpline, S2Point};
+///
+/// let c = NlerpSpline::try_new(vec![S2Point::X, S2Point::Y], None).unwrap();
+/// let mid = c.eval(0.5).as_dvec3();
+/// assert!((mid.x - mid.y).abs() < 1e-15 && mid.z == 0.0);
+/// // Faster in the middle than at the ends.
+/// assert!(c.jet(0.5).velocity.length() > c.jet(0.0).velocity.length());
+/// ```
+#[derive(Clone, Debug)]
+pub struct NlerpSpline<P: Manifold> {
+    points: Vec<P>,
+    knots: Knots,
+}
+
+impl<P: Manifold> NlerpSpline<P> {
+    /// Builds the curve; `knots` defaults to `0, 1, …, n`.
+    ///
+    /// # Errors
+    ///
+    /// As [`GeodesicSpline::try_new`] (antipodal neighbours would pass through the origin).
+    pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_chain(&points, 2)?;
+        let knots = Knots::or_uniform(knots, points.len())?;
+        Ok(Self { points, knots })
+    }
+
+    /// The points interpolated at the knots.
+    #[must_use]
+    pub fn points(&self) -> &[P] {
+        &self.points
+    }
+}
+
+impl<P: Manifold> Curve for NlerpSpline<P> {
+    type Point = P;
+
+    fn domain(&self) -> [f64; 2] {
+        self.knots.domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        self.knots.as_slice()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
+        let (i, s) = self.knots.locate(t, side);
+        let (a, b) = (self.points[i].to_vector(), self.points[i + 1].to_vector());
+        let v = a.clone() * (1.0 - s) + b.clone() * s;
+        let dv = (b - a) * (1.0 / self.knots.width(i));
+        let n = v.length();
+        let c = v * (1.0 / n);
+        let dn = c.dot(&dv);
+        let dc = (dv.clone() - c.clone() * dn) * (1.0 / n);
+        let ddn = dc.dot(&dv);
+        let ddc = (c.clone() * ddn + dc.clone() * (2.0 * dn)) * (-1.0 / n);
+        let point = if s == 0.0 {
+            self.points[i].clone()
+        } else if s == 1.0 {
+            self.points[i + 1].clone()
+        } else {
+            P::from_vector_unchecked(c)
+        };
+        Jet {
+            point,
+            velocity: dc,
+            acceleration: ddc,
+        }
+    }
+}

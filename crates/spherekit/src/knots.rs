@@ -1,0 +1,118 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Knot sequences: strictly increasing parameters of the joints of a piecewise curve.
+
+use crate::curve::{Side, clamp_param};
+use crate::error::SplineError;
+
+/// A strictly increasing, finite sequence of at least two parameters.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{Knots, Side};
+///
+/// let k = Knots::try_new(vec![0.0, 1.0, 3.0]).unwrap();
+/// assert_eq!(k.locate(2.0, Side::Right), (1, 0.5));
+/// assert_eq!(k.locate(1.0, Side::Left), (0, 1.0));
+/// assert_eq!(k.locate(1.0, Side::Right), (1, 0.0));
+/// assert!(Knots::try_new(vec![0.0, 0.0]).is_err());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Knots(Vec<f64>);
+
+impl Knots {
+    /// The knots `0, 1, …, count − 1`.
+    ///
+    /// # Panics
+    ///
+    /// If `count < 2`.
+    #[must_use]
+    pub fn uniform(count: usize) -> Self {
+        assert!(count >= 2, "a knot sequence needs at least two knots");
+        Self((0..count).map(|i| i as f64).collect())
+    }
+
+    /// Validates a knot sequence.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::KnotCount`] for fewer than two knots, [`SplineError::InvalidKnot`] for a
+    /// non-finite knot, [`SplineError::KnotsNotIncreasing`] where a knot does not exceed its
+    /// predecessor.
+    pub fn try_new(knots: Vec<f64>) -> Result<Self, SplineError> {
+        if knots.len() < 2 {
+            return Err(SplineError::KnotCount {
+                expected: 2,
+                got: knots.len(),
+            });
+        }
+        if let Some(index) = knots.iter().position(|k| !k.is_finite()) {
+            return Err(SplineError::InvalidKnot { index });
+        }
+        if let Some(i) = knots
+            .windows(2)
+            .position(|w| w[1] <= w[0] || (w[1] - w[0]) == 0.0)
+        {
+            return Err(SplineError::KnotsNotIncreasing { index: i + 1 });
+        }
+        Ok(Self(knots))
+    }
+
+    /// The given knots if there are exactly `count`, or `0, 1, …, count − 1` when `None`.
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new), and [`SplineError::KnotCount`] for a wrong count.
+    pub fn or_uniform(knots: Option<Vec<f64>>, count: usize) -> Result<Self, SplineError> {
+        match knots {
+            None => Ok(Self::uniform(count.max(2))),
+            Some(k) if k.len() != count => Err(SplineError::KnotCount {
+                expected: count,
+                got: k.len(),
+            }),
+            Some(k) => Self::try_new(k),
+        }
+    }
+
+    /// The knots.
+    #[must_use]
+    pub fn as_slice(&self) -> &[f64] {
+        &self.0
+    }
+
+    /// The number of pieces, one less than the number of knots.
+    #[must_use]
+    pub fn segment_count(&self) -> usize {
+        self.0.len() - 1
+    }
+
+    /// `[first, last]`.
+    #[must_use]
+    pub fn domain(&self) -> [f64; 2] {
+        [self.0[0], self.0[self.0.len() - 1]]
+    }
+
+    /// The width of piece `i`.
+    #[must_use]
+    pub fn width(&self, i: usize) -> f64 {
+        self.0[i + 1] - self.0[i]
+    }
+
+    /// The piece containing `t` (clamped to the domain) and the local parameter `s ∈ [0, 1]`
+    /// on it. At an interior knot, `side` chooses the piece that ends there (`Left`, `s = 1`)
+    /// or the one that starts there (`Right`, `s = 0`).
+    #[must_use]
+    pub fn locate(&self, t: f64, side: Side) -> (usize, f64) {
+        let t = clamp_param(t, self.domain());
+        let k = &self.0;
+        let above = match side {
+            Side::Left => k.partition_point(|&x| x < t),
+            Side::Right => k.partition_point(|&x| x <= t),
+        };
+        let i = above.saturating_sub(1).min(k.len() - 2);
+        let s = (t - k[i]) / (k[i + 1] - k[i]);
+        (i, s.clamp(0.0, 1.0))
+    }
+}

@@ -1,0 +1,89 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Spline curves on spheres: directions on S², orientations as unit quaternions (S³), and
+//! points of S^m of any dimension.
+//!
+//! # Example
+//!
+//! ```
+//! use spherekit::{Curve, GeodesicSpline, Manifold, UnitQuat, unflip};
+//! use spherekit::glam::DVec3;
+//!
+//! // Three orientations; the last one is given with the "wrong" sign.
+//! let q0 = UnitQuat::IDENTITY;
+//! let q1 = UnitQuat::from_axis_angle(DVec3::Z, 1.0).unwrap();
+//! let q2 = UnitQuat::from_axis_angle(DVec3::X, 2.0).unwrap().neg();
+//! let mut keys = vec![q0, q1, q2];
+//! unflip(&mut keys); // explicit double-cover canonicalisation
+//! let curve = GeodesicSpline::try_new(keys, None).unwrap();
+//!
+//! // Halfway along the first piece: a rotation by 0.5 rad about z, turning at 1 rad per unit t.
+//! let jet = curve.jet(0.5);
+//! assert!(jet.point.dist(&UnitQuat::from_axis_angle(DVec3::Z, 0.5).unwrap()) < 1e-15);
+//! let (omega, _alpha) = spherekit::angular_velocity_acceleration(jet.point, jet.velocity, jet.acceleration);
+//! assert!((omega - DVec3::Z).length() < 1e-14);
+//! ```
+//!
+//! # Conventions
+//!
+//! - Angles are in radians. Distances on a sphere are great-circle angles in `[0, π]`; on S³
+//!   that is the angle between the quaternions as unit 4-vectors, which is **half** the angle of
+//!   the rotation between the two orientations.
+//! - Points of every sphere are unit vectors of the ambient space ℝ^(m+1), and tangent vectors
+//!   and derivatives of curves are ambient vectors ([`Ambient`]). For [`UnitQuat`] the ambient
+//!   vector is a [`glam::DVec4`] in glam's `x, y, z, w` order; the scene format writes
+//!   quaternions scalar first, `[w, x, y, z]`.
+//! - A unit quaternion `q` rotates vectors by `v ↦ q·v·q̄`; `q₂·q₁` is "first `q₁`, then
+//!   `q₂`". The quaternion of the rotation by φ about the unit axis `n` is
+//!   `cos(φ/2) + sin(φ/2)·n`.
+//! - **Angular velocity** of a quaternion curve `q(t)` is the space-frame (fixed-frame) vector
+//!   `ω = 2·q′·q̄`, and the angular acceleration is `α = ω′ = 2·q″·q̄` (vector parts). The
+//!   **factor 2** comes from the half-angle: a curve moving at speed `|q′|` on S³ turns the body
+//!   at `2|q′|` radians per unit time. See [`angular_velocity_acceleration`].
+//! - **Double cover.** `q` and `−q` are the same rotation. Geodesic interpolation never flips
+//!   signs; spline constructors use the keys as given. [`unflip`] makes consecutive keys have
+//!   non-negative dot products, and the scene format calls it once before construction unless
+//!   `"canonicalize": false`.
+//! - **Domain.** Every curve has a parameter interval `[t0, t1]` ([`Curve::domain`]); outside it
+//!   the parameter is clamped (see [`Curve`]).
+//! - **Antipodal points** have no unique geodesic. Constructions reject them with
+//!   [`SplineError::Antipodal`] (within [`ANTIPODAL_TOLERANCE`]); nothing returns NaN.
+//!
+//! # Numerics
+//!
+//! Angles come from `atan2` (never `acos` of a dot product); `sin x / x` and its relatives use
+//! series branches near 0; geodesic interpolation is exact at `t = 0` and `t = 1`.
+//!
+//! # Feature flags
+//!
+//! - `std` (default): the standard library's float functions.
+//! - `libm`: route every transcendental function through the `libm` crate, so that native and
+//!   WebAssembly builds give bit-identical results. Enable it in binaries that render.
+//! - `serde`: `Serialize` for points.
+//! - `scene`: the JSON scene format ([`scene`]) shared by the CLI, the browser and the tests.
+
+#![cfg_attr(docsrs, feature(doc_auto_cfg))]
+
+pub use glam;
+
+mod ambient;
+mod curve;
+mod error;
+mod geodesic;
+mod knots;
+mod manifold;
+mod math;
+mod s2;
+mod s3;
+mod sn;
+
+pub use ambient::{Ambient, VecN};
+pub use curve::{Curve, Jet, Side};
+pub use error::{PointError, SplineError};
+pub use geodesic::{GeodesicSpline, NlerpSpline};
+pub use knots::Knots;
+pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
+pub use s2::S2Point;
+pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
+pub use sn::SnPoint;

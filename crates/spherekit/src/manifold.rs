@@ -1,0 +1,172 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The one manifold trait that every construction is written against.
+
+use core::fmt::Debug;
+
+use crate::ambient::Ambient;
+use crate::error::PointError;
+use crate::math;
+
+/// Two points are treated as antipodal when `|p + q|` is at most this (and `p · q < 0`).
+///
+/// At that distance from a half great circle the minimising geodesic is decided by rounding
+/// noise, so constructions report [`SplineError::Antipodal`](crate::SplineError::Antipodal)
+/// instead of picking an arbitrary plane.
+pub const ANTIPODAL_TOLERANCE: f64 = 1e-14;
+
+/// A unit sphere S^m ⊂ ℝ^(m+1) with its great-circle geometry.
+///
+/// Implementors provide only the conversion to and from the ambient vector; distance,
+/// logarithm, exponential and geodesic interpolation are provided once for every sphere,
+/// so that each spline construction is written once for S², S³ and S^m.
+///
+/// Tangent vectors are ambient vectors orthogonal to their base point. For
+/// [`UnitQuat`](crate::UnitQuat) the ambient space is ℝ⁴ in glam's `x, y, z, w` order; the
+/// quaternion view of the same vectors is given by [`UnitQuat`](crate::UnitQuat)'s own methods.
+///
+/// # Numerics
+///
+/// The angle between `p` and `q` is `θ = 2·atan2(|p − q|, |p + q|)`, accurate near 0 and near π.
+/// The unit direction of the geodesic is formed from `q − p` (near 0) or `q + p` (near π), so it
+/// keeps full relative accuracy at both ends. Geodesic interpolation never flips signs.
+pub trait Manifold: Clone + Debug + PartialEq {
+    /// The ambient vector type.
+    type Vector: Ambient;
+
+    /// The point as a unit vector of the ambient space.
+    fn to_vector(&self) -> Self::Vector;
+
+    /// Wraps a vector that is already unit length (checked in debug builds only).
+    fn from_vector_unchecked(v: Self::Vector) -> Self;
+
+    /// Normalises `v` onto the sphere.
+    ///
+    /// # Errors
+    ///
+    /// [`PointError::NonFinite`] or [`PointError::ZeroLength`].
+    fn try_from_vector(v: Self::Vector) -> Result<Self, PointError> {
+        normalize(v).map(Self::from_vector_unchecked)
+    }
+
+    /// Great-circle distance in radians, in `[0, π]`.
+    fn dist(&self, other: &Self) -> f64 {
+        let (p, q) = (self.to_vector(), other.to_vector());
+        2.0 * math::atan2((q.clone() - p.clone()).length(), (q + p).length())
+    }
+
+    /// `true` when `self` and `other` are antipodal within [`ANTIPODAL_TOLERANCE`].
+    fn is_antipodal(&self, other: &Self) -> bool {
+        let (p, q) = (self.to_vector(), other.to_vector());
+        p.dot(&q) < 0.0 && (q + p).length() <= ANTIPODAL_TOLERANCE
+    }
+
+    /// The tangent at `self` pointing along the minimising geodesic to `other`, of length
+    /// [`dist`](Manifold::dist); `None` if the points are antipodal.
+    fn try_log(&self, other: &Self) -> Option<Self::Vector> {
+        let (theta, e) = geodesic_frame(&self.to_vector(), &other.to_vector())?;
+        Some(e * theta)
+    }
+
+    /// Like [`try_log`](Manifold::try_log); the zero vector for antipodal points.
+    ///
+    /// # Panics
+    ///
+    /// In debug builds, if the points are antipodal.
+    fn log(&self, other: &Self) -> Self::Vector {
+        let l = self.try_log(other);
+        debug_assert!(l.is_some(), "log of antipodal points: {self:?}, {other:?}");
+        l.unwrap_or_else(|| self.to_vector().zeros_like())
+    }
+
+    /// Follows the geodesic from `self` with initial velocity `v` (tangent at `self`) for unit time:
+    /// `cos|v|·p + sin|v|/|v|·v`.
+    fn exp(&self, v: &Self::Vector) -> Self {
+        let p = self.to_vector();
+        let theta = v.length();
+        let (s, c) = math::sin_cos(theta);
+        let r = p * c + v.clone() * (if theta > 0.0 { s / theta } else { 1.0 });
+        Self::from_vector_unchecked(renormalize(r))
+    }
+
+    /// The point at fraction `t` of the minimising geodesic from `self` to `other`; `None` for
+    /// antipodal points. Exact at `t = 0` and `t = 1`; for other `t` outside `[0, 1]` the
+    /// great circle is continued.
+    fn try_slerp(&self, other: &Self, t: f64) -> Option<Self> {
+        if t == 0.0 {
+            return Some(self.clone());
+        }
+        if t == 1.0 {
+            return Some(other.clone());
+        }
+        let p = self.to_vector();
+        let (theta, e) = geodesic_frame(&p, &other.to_vector())?;
+        let (s, c) = math::sin_cos(t * theta);
+        Some(Self::from_vector_unchecked(renormalize(p * c + e * s)))
+    }
+
+    /// Like [`try_slerp`](Manifold::try_slerp); returns `self` for antipodal points.
+    ///
+    /// # Panics
+    ///
+    /// In debug builds, if the points are antipodal.
+    fn slerp(&self, other: &Self, t: f64) -> Self {
+        let r = self.try_slerp(other, t);
+        debug_assert!(
+            r.is_some(),
+            "slerp of antipodal points: {self:?}, {other:?}"
+        );
+        r.unwrap_or_else(|| self.clone())
+    }
+
+    /// The component of the ambient vector `v` tangent to the sphere at `self`.
+    fn project_tangent(&self, v: &Self::Vector) -> Self::Vector {
+        let p = self.to_vector();
+        v.clone() - p.clone() * p.dot(v)
+    }
+}
+
+/// The angle θ ∈ [0, π) from `p` to `q` and the unit tangent `e` at `p` with
+/// `q = cos θ·p + sin θ·e` (`e = 0` when θ = 0). `None` when antipodal.
+pub(crate) fn geodesic_frame<V: Ambient>(p: &V, q: &V) -> Option<(f64, V)> {
+    let diff = q.clone() - p.clone();
+    let sum = q.clone() + p.clone();
+    let (d, s) = (diff.length(), sum.length());
+    let theta = 2.0 * math::atan2(d, s);
+    // q − cos θ·p, formed without cancellation: from the difference near 0, the sum near π.
+    let w = if p.dot(q) >= 0.0 {
+        diff + p.clone() * (0.5 * d * d)
+    } else {
+        if s <= ANTIPODAL_TOLERANCE {
+            return None;
+        }
+        sum - p.clone() * (0.5 * s * s)
+    };
+    let wl = w.length();
+    if wl == 0.0 {
+        return Some((0.0, p.zeros_like()));
+    }
+    Some((theta, w * (1.0 / wl)))
+}
+
+/// Scales a non-zero finite vector to unit length, guarding against overflow and underflow.
+pub(crate) fn normalize<V: Ambient>(v: V) -> Result<V, PointError> {
+    if !v.is_finite() {
+        return Err(PointError::NonFinite);
+    }
+    let m = v.to_vec().iter().fold(0.0_f64, |m, a| m.max(a.abs()));
+    if m < f64::MIN_POSITIVE {
+        return Err(PointError::ZeroLength);
+    }
+    let v = v * (1.0 / m);
+    let l = v.length();
+    Ok(v * (1.0 / l))
+}
+
+/// Removes the rounding drift of a vector that is unit up to a few ulps.
+#[inline]
+pub(crate) fn renormalize<V: Ambient>(v: V) -> V {
+    let l2 = v.dot(&v);
+    v * (1.0 / l2.sqrt())
+}
