@@ -73,9 +73,15 @@ mod error;
 mod geodesic;
 mod knots;
 mod manifold;
+#[allow(
+    dead_code,
+    reason = "some helpers are used only by constructions not yet merged"
+)]
 mod math;
 mod s2;
 mod s3;
+#[cfg(feature = "scene")]
+pub mod scene;
 mod sn;
 
 pub use ambient::{Ambient, VecN};
