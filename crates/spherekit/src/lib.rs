@@ -93,3 +93,8 @@ pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
 pub use sn::SnPoint;
+
+/// The README's Rust example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeDoctests;
