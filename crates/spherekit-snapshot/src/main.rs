@@ -136,8 +136,8 @@ fn sample(args: &[String]) -> Result<(), Failure> {
             ))
         })?;
     }
-    let curve = scene.build().map_err(|e| bad(e.to_string()))?;
-    let out = scene.sample_json(&curve, deriv);
+    let curves = scene.build().map_err(|e| bad(e.to_string()))?;
+    let out = scene.sample_json(&curves, deriv);
     let mut stdout = std::io::stdout().lock();
     serde_json::to_writer(&mut stdout, &out)
         .map_err(std::io::Error::from)

@@ -209,7 +209,7 @@ fn bad_input_exits_2_with_one_line_naming_the_field() {
         (
             r#"{"space":"S2","method":"squad","points":[[1,0,0],[0,1,0]]}"#,
             &[],
-            "space: method \"squad\" works on S3, not S2",
+            "method: \"squad\" works on S3, not S2",
         ),
         (
             r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1]]}"#,
@@ -307,6 +307,31 @@ fn bad_input_exits_2_with_one_line_naming_the_field() {
             "--samples: must be a whole number from 2",
         ),
         (S2_SCENE, &["--bogus"], "unknown option --bogus"),
+        (
+            r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]]},{"method":"nlerp","points":[[1,0,0],[-1,0,0]]}]}"#,
+            &[],
+            "curves[1].points[0] and points[1] are antipodal",
+        ),
+        (
+            r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]],"color":"red"}]}"#,
+            &[],
+            "curves[0].color: \"red\" is not a colour",
+        ),
+        (
+            r#"{"space":"S2","curves":[{"method":"squad","points":[[1,0,0],[0,1,0]]}]}"#,
+            &[],
+            "curves[0].method: \"squad\" works on S3, not S2",
+        ),
+        (
+            r#"{"space":"S2","curves":[]}"#,
+            &[],
+            "curves: must list at least one curve",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"curves":[]}"#,
+            &[],
+            "curves: give either",
+        ),
     ];
     for (scene, extra, expected) in cases {
         let line = reject(scene, extra);
@@ -318,6 +343,21 @@ fn bad_input_exits_2_with_one_line_naming_the_field() {
     // Deeply nested JSON is rejected by the parser's depth limit, not by a stack overflow.
     let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
     assert!(reject(&deep, &[]).contains("invalid scene JSON"));
+}
+
+#[test]
+fn several_curves_in_one_scene() {
+    let out = sample(
+        r##"{"space":"S2","samples":3,"curves":[
+            {"method":"geodesic","points":[[1,0,0],[0,1,0]],"color":"#d55e00"},
+            {"method":"nlerp","points":[[1,0,0],[0,0,1]],"knots":[0,4]}]}"##,
+        &[],
+    );
+    let curves = out["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 2);
+    assert_eq!(curves[0]["method"], "geodesic");
+    assert_eq!(curves[1]["domain"], serde_json::json!([0.0, 4.0]));
+    assert_eq!(curves[1]["points"][2], serde_json::json!([0.0, 0.0, 1.0]));
 }
 
 #[test]

@@ -70,6 +70,13 @@ pub enum SceneError {
     Spline(SplineError),
     /// The method id is known but not implemented yet.
     NotImplemented(Method),
+    /// An error in one curve of a scene's `curves` list.
+    InCurve {
+        /// Index into `curves`.
+        index: usize,
+        /// The error.
+        error: Box<SceneError>,
+    },
 }
 
 impl fmt::Display for SceneError {
@@ -81,6 +88,7 @@ impl fmt::Display for SceneError {
             Self::NotImplemented(m) => {
                 write!(f, "method: \"{}\" is not implemented yet", m.id())
             }
+            Self::InCurve { index, error } => write!(f, "curves[{index}].{error}"),
         }
     }
 }
@@ -310,6 +318,32 @@ impl Support {
 #[serde(deny_unknown_fields)]
 struct RawScene {
     space: String,
+    #[serde(default)]
+    method: Option<String>,
+    #[serde(default)]
+    points: Option<Vec<Vec<f64>>>,
+    #[serde(default)]
+    knots: Option<Vec<f64>>,
+    #[serde(default)]
+    params: Option<Map<String, Value>>,
+    #[serde(default)]
+    canonicalize: Option<bool>,
+    #[serde(default)]
+    color: Option<String>,
+    #[serde(default)]
+    curves: Option<Vec<RawCurve>>,
+    #[serde(default)]
+    samples: Option<f64>,
+    #[serde(default)]
+    eval_at: Option<Vec<f64>>,
+    #[serde(default)]
+    view: Option<Value>,
+}
+
+/// One curve of a multi-curve scene, as written in JSON.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCurve {
     method: String,
     points: Vec<Vec<f64>>,
     #[serde(default)]
@@ -319,11 +353,7 @@ struct RawScene {
     #[serde(default)]
     canonicalize: Option<bool>,
     #[serde(default)]
-    samples: Option<f64>,
-    #[serde(default)]
-    eval_at: Option<Vec<f64>>,
-    #[serde(default)]
-    view: Option<Value>,
+    color: Option<String>,
 }
 
 /// Where to evaluate a curve.
@@ -335,11 +365,9 @@ pub enum Sampling {
     At(Vec<f64>),
 }
 
-/// A validated scene: its fields are checked, the curve is built by [`Scene::build`].
+/// One curve of a scene: a method and its input.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Scene {
-    /// The sphere.
-    pub space: Space,
+pub struct CurveSpec {
     /// The construction.
     pub method: Method,
     /// The input points as given (normalised when the curve is built).
@@ -350,10 +378,27 @@ pub struct Scene {
     pub params: Map<String, Value>,
     /// Whether S³ keys are canonicalised with [`unflip`] before construction.
     pub canonicalize: bool,
+    /// The colour to draw it in, `[r, g, b]`, when the scene gives one (`"#rrggbb"`).
+    pub color: Option<[u8; 3]>,
+}
+
+/// A validated scene: its fields are checked, the curves are built by [`Scene::build`].
+///
+/// A scene holds one curve (the fields `method`, `points`, `knots`, `params`, `canonicalize`,
+/// `color` at the top level) or several on the same sphere (`"curves": [{ "method", "points",
+/// "knots", "params", "canonicalize", "color" }, …]`), for comparing methods on the same keys.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// The sphere.
+    pub space: Space,
+    /// The curves, at least one.
+    pub curves: Vec<CurveSpec>,
     /// Where to sample.
     pub sampling: Sampling,
-    /// Rendering options, passed through.
+    /// Rendering options, passed through to the renderer.
     pub view: Option<Value>,
+    /// Whether the curves came as a `curves` list (errors and output then name `curves[i]`).
+    listed: bool,
 }
 
 fn samples_count(x: f64) -> Result<usize, SceneError> {
@@ -370,22 +415,40 @@ fn samples_count(x: f64) -> Result<usize, SceneError> {
     Ok(x as usize)
 }
 
-impl Scene {
-    /// Parses and validates a scene (everything but the curve construction itself).
-    ///
-    /// # Errors
-    ///
-    /// [`SceneError::Json`] for text that is not a scene, [`SceneError::Field`] for a bad field.
-    pub fn from_json(text: &str) -> Result<Self, SceneError> {
-        let raw: RawScene =
-            serde_json::from_str(text).map_err(|e| SceneError::Json(e.to_string()))?;
-        let space = Space::parse(&raw.space)?;
+fn parse_color(field: &str, c: Option<String>) -> Result<Option<[u8; 3]>, SceneError> {
+    let Some(c) = c else { return Ok(None) };
+    let hex = c
+        .strip_prefix('#')
+        .filter(|h| h.len() == 6 && h.bytes().all(|b| b.is_ascii_hexdigit()));
+    let Some(hex) = hex else {
+        return Err(field_error(
+            field,
+            format!("\"{c}\" is not a colour \"#rrggbb\""),
+        ));
+    };
+    let byte = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).unwrap_or(0);
+    Ok(Some([byte(0), byte(2), byte(4)]))
+}
+
+/// Wraps an error with the curve it belongs to in a `curves` list.
+fn in_curve(index: Option<usize>, e: SceneError) -> SceneError {
+    match index {
+        None => e,
+        Some(index) => SceneError::InCurve {
+            index,
+            error: Box::new(e),
+        },
+    }
+}
+
+impl CurveSpec {
+    fn validate(space: Space, raw: RawCurve) -> Result<Self, SceneError> {
         let method = Method::parse(&raw.method)?;
         if !method.supports(space) {
             return Err(field_error(
-                "space",
+                "method",
                 format!(
-                    "method \"{}\" works on {}, not {}",
+                    "\"{}\" works on {}, not {}",
                     method.id(),
                     method.support().describe(),
                     space.name()
@@ -411,6 +474,89 @@ impl Scene {
                 "applies to S3 (quaternion) scenes only",
             ));
         }
+        Ok(Self {
+            method,
+            points: raw.points,
+            knots: raw.knots,
+            params: raw.params.unwrap_or_default(),
+            canonicalize: raw.canonicalize.unwrap_or(true),
+            color: parse_color("color", raw.color)?,
+        })
+    }
+
+    fn build(&self, space: Space) -> Result<BuiltCurve, SceneError> {
+        if !self.method.is_implemented() {
+            return Err(SceneError::NotImplemented(self.method));
+        }
+        let params = Params::new(self.method, &self.params);
+        Ok(match space {
+            Space::S2 => BuiltCurve::S2(build_any(self, points(&self.points)?, params)?),
+            Space::S3 => {
+                let mut keys: Vec<UnitQuat> = points(&self.points)?;
+                if self.canonicalize {
+                    unflip(&mut keys);
+                }
+                BuiltCurve::S3(build_s3(self, keys, params)?)
+            }
+            Space::Sn(_) => BuiltCurve::Sn(build_any(self, points(&self.points)?, params)?),
+        })
+    }
+}
+
+impl Scene {
+    /// Parses and validates a scene (everything but the curve constructions themselves).
+    ///
+    /// # Errors
+    ///
+    /// [`SceneError::Json`] for text that is not a scene, [`SceneError::Field`] for a bad field.
+    pub fn from_json(text: &str) -> Result<Self, SceneError> {
+        let raw: RawScene =
+            serde_json::from_str(text).map_err(|e| SceneError::Json(e.to_string()))?;
+        let space = Space::parse(&raw.space)?;
+        let listed = raw.curves.is_some();
+        let curves = match (raw.curves, raw.method, raw.points) {
+            (Some(curves), None, None) => {
+                if raw.knots.is_some()
+                    || raw.params.is_some()
+                    || raw.canonicalize.is_some()
+                    || raw.color.is_some()
+                {
+                    return Err(field_error(
+                        "curves",
+                        "with \"curves\", give knots, params, canonicalize and color inside each curve",
+                    ));
+                }
+                if curves.is_empty() {
+                    return Err(field_error("curves", "must list at least one curve"));
+                }
+                curves
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, c)| CurveSpec::validate(space, c).map_err(|e| in_curve(Some(i), e)))
+                    .collect::<Result<Vec<_>, _>>()?
+            }
+            (Some(_), _, _) => {
+                return Err(field_error(
+                    "curves",
+                    "give either \"curves\" or a single curve's \"method\" and \"points\", not both",
+                ));
+            }
+            (None, Some(method), Some(points)) => {
+                let raw_curve = RawCurve {
+                    method,
+                    points,
+                    knots: raw.knots,
+                    params: raw.params,
+                    canonicalize: raw.canonicalize,
+                    color: raw.color,
+                };
+                vec![CurveSpec::validate(space, raw_curve)?]
+            }
+            (None, None, _) => return Err(SceneError::Json("missing field `method`".into())),
+            (None, Some(_), None) => {
+                return Err(SceneError::Json("missing field `points`".into()));
+            }
+        };
         let sampling = match (raw.samples, raw.eval_at) {
             (Some(_), Some(_)) => {
                 return Err(field_error(
@@ -432,13 +578,10 @@ impl Scene {
         };
         Ok(Self {
             space,
-            method,
-            points: raw.points,
-            knots: raw.knots,
-            params: raw.params.unwrap_or_default(),
-            canonicalize: raw.canonicalize.unwrap_or(true),
+            curves,
             sampling,
             view: raw.view,
+            listed,
         })
     }
 
@@ -457,28 +600,22 @@ impl Scene {
         Ok(())
     }
 
-    /// Normalises the points and builds the curve.
+    /// Normalises the points and builds every curve.
     ///
     /// # Errors
     ///
-    /// [`SceneError::Spline`] when the construction rejects the input, [`SceneError::Field`] for
-    /// bad `params`, [`SceneError::NotImplemented`] for a method not in this build.
-    pub fn build(&self) -> Result<BuiltCurve, SceneError> {
-        if !self.method.is_implemented() {
-            return Err(SceneError::NotImplemented(self.method));
-        }
-        let params = Params::new(self.method, &self.params);
-        Ok(match self.space {
-            Space::S2 => BuiltCurve::S2(build_any(self, points(&self.points)?, params)?),
-            Space::S3 => {
-                let mut keys: Vec<UnitQuat> = points(&self.points)?;
-                if self.canonicalize {
-                    unflip(&mut keys);
-                }
-                BuiltCurve::S3(build_s3(self, keys, params)?)
-            }
-            Space::Sn(_) => BuiltCurve::Sn(build_any(self, points(&self.points)?, params)?),
-        })
+    /// [`SceneError::Spline`] when a construction rejects its input, [`SceneError::Field`] for
+    /// bad `params`, [`SceneError::NotImplemented`] for a method not in this build; in a
+    /// multi-curve scene the message is prefixed with `curves[i]`.
+    pub fn build(&self) -> Result<Vec<BuiltCurve>, SceneError> {
+        self.curves
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                c.build(self.space)
+                    .map_err(|e| in_curve(self.listed.then_some(i), e))
+            })
+            .collect()
     }
 
     /// The parameters to sample a curve with the given domain at.
@@ -500,19 +637,34 @@ impl Scene {
         }
     }
 
-    /// Samples a built curve into the JSON object printed by `spherekit sample`: `space`,
+    /// Samples built curves into the JSON object printed by `spherekit sample`: `space`,
     /// `method`, `domain`, `t`, `points`, with `deriv` also `velocity`, `acceleration` and (S3)
     /// `angular_velocity`, `angular_acceleration`; `controls`, `auxiliary` and `info` when the
-    /// method has them.
+    /// method has them. A scene of several curves gives `space` and `curves`, a list of such
+    /// objects without `space`.
     #[must_use]
-    pub fn sample_json(&self, curve: &BuiltCurve, deriv: bool) -> Value {
+    pub fn sample_json(&self, curves: &[BuiltCurve], deriv: bool) -> Value {
+        let one = |spec: &CurveSpec, curve: &BuiltCurve| {
+            let mut out = Map::new();
+            out.insert("method".into(), json!(spec.method.id()));
+            match curve {
+                BuiltCurve::S2(b) => b.sample_into(self, deriv, &mut out),
+                BuiltCurve::S3(b) => b.sample_into(self, deriv, &mut out),
+                BuiltCurve::Sn(b) => b.sample_into(self, deriv, &mut out),
+            }
+            out
+        };
         let mut out = Map::new();
         out.insert("space".into(), json!(self.space.name()));
-        out.insert("method".into(), json!(self.method.id()));
-        match curve {
-            BuiltCurve::S2(b) => b.sample_into(self, deriv, &mut out),
-            BuiltCurve::S3(b) => b.sample_into(self, deriv, &mut out),
-            BuiltCurve::Sn(b) => b.sample_into(self, deriv, &mut out),
+        if let ([spec], [curve], false) = (self.curves.as_slice(), curves, self.listed) {
+            out.extend(one(spec, curve));
+        } else {
+            let list = self
+                .curves
+                .iter()
+                .zip(curves)
+                .map(|(s, c)| Value::Object(one(s, c)));
+            out.insert("curves".into(), Value::Array(list.collect()));
         }
         Value::Object(out)
     }
@@ -792,12 +944,12 @@ impl<'a> Params<'a> {
 
 /// Methods that work on every sphere.
 fn build_any<P: ScenePoint>(
-    scene: &Scene,
+    spec: &CurveSpec,
     points: Vec<P>,
     params: Params<'_>,
 ) -> Result<Built<P>, SceneError> {
-    let knots = scene.knots.clone();
-    Ok(match scene.method {
+    let knots = spec.knots.clone();
+    Ok(match spec.method {
         Method::Geodesic => {
             params.finish()?;
             Built::new(GeodesicSpline::try_new(points, knots)?)
@@ -812,9 +964,9 @@ fn build_any<P: ScenePoint>(
 
 /// Methods on S³, falling back to [`build_any`].
 fn build_s3(
-    scene: &Scene,
+    spec: &CurveSpec,
     keys: Vec<UnitQuat>,
     params: Params<'_>,
 ) -> Result<Built<UnitQuat>, SceneError> {
-    build_any(scene, keys, params)
+    build_any(spec, keys, params)
 }
