@@ -31,3 +31,15 @@ doc:
 # Find repeated code (a tool of the development machines)
 duplicates:
     duplicates --most 20
+
+# Re-bless failing golden images (UPDATE_GOLDENS=force rewrites all); refused in CI
+bless:
+    UPDATE_GOLDENS=1 cargo test -p spherekit-snapshot --test golden
+
+# Regenerate tests/golden/contact-sheet.png from the references
+contact-sheet:
+    cargo run --quiet -p spherekit-snapshot --example contact_sheet
+
+# Render a scene to a PNG: just render SCENE OUT [SIZE]
+render scene out size="512":
+    cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- render {{scene}} -o {{out}} --size {{size}}

@@ -5,6 +5,7 @@
 //!
 //! ```text
 //! spherekit sample SCENE.json|- [--deriv] [--samples N]
+//! spherekit render SCENE.json|- -o OUT.png [--size N]
 //! spherekit methods
 //! ```
 //!
@@ -24,6 +25,9 @@ commands:
       (`-` reads the scene from standard input).
       --deriv        also print velocity, acceleration (and angular velocity on S3)
       --samples N    N uniform samples over the domain (overrides the scene)
+  render SCENE.json -o OUT.png [--size N]
+      Draw the scene (sphere, curves, speed plot) into a PNG, N pixels wide
+      (default 512). No file is written when the scene is bad.
   methods
       List the curve methods and the spaces each supports.
   help
@@ -56,6 +60,7 @@ fn main() -> ExitCode {
 fn run(args: &[String]) -> Result<(), Failure> {
     match args.first().map(String::as_str) {
         Some("sample") => sample(&args[1..]),
+        Some("render") => render(&args[1..]),
         Some("methods") if args.len() == 1 => {
             methods();
             Ok(())
@@ -146,4 +151,44 @@ fn sample(args: &[String]) -> Result<(), Failure> {
             status: 1,
             message: format!("cannot write the output: {e}"),
         })
+}
+
+fn render(args: &[String]) -> Result<(), Failure> {
+    let mut path = None;
+    let mut out = None;
+    let mut size = 512_u32;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "-o" | "--output" => {
+                out = Some(
+                    it.next()
+                        .ok_or_else(|| bad("-o needs a file name"))?
+                        .clone(),
+                );
+            }
+            "--size" => {
+                let v = it.next().ok_or_else(|| bad("--size needs a number"))?;
+                size = v
+                    .parse()
+                    .map_err(|_| bad(format!("--size: \"{v}\" is not a whole number")))?;
+            }
+            s if s.starts_with("--") => return Err(bad(format!("unknown option {s}"))),
+            s if path.is_none() => path = Some(s.to_owned()),
+            s => return Err(bad(format!("unexpected argument \"{s}\""))),
+        }
+    }
+    let path = path.ok_or_else(|| bad("render: give a scene file, or - for standard input"))?;
+    let out = out.ok_or_else(|| bad("render: give the output file with -o OUT.png"))?;
+    let text = read_scene(&path)?;
+    let scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
+    let pixmap = spherekit_render::render(&scene, size).map_err(|e| bad(e.to_string()))?;
+    let png = spherekit_snapshot::encode_png(&pixmap).map_err(|e| Failure {
+        status: 1,
+        message: format!("cannot encode the PNG: {e}"),
+    })?;
+    std::fs::write(&out, png).map_err(|e| Failure {
+        status: 1,
+        message: format!("cannot write {out}: {e}"),
+    })
 }

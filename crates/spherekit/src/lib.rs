@@ -61,7 +61,7 @@
 //! - `libm`: route every transcendental function through the `libm` crate, so that native and
 //!   WebAssembly builds give bit-identical results. Enable it in binaries that render.
 //! - `serde`: `Serialize` for points.
-//! - `scene`: the JSON scene format ([`scene`]) shared by the CLI, the browser and the tests.
+//! - `scene`: the JSON scene format (module `scene`) shared by the CLI, the browser and the tests.
 
 #![cfg_attr(docsrs, feature(doc_auto_cfg))]
 

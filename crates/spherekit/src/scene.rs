@@ -675,6 +675,8 @@ impl Scene {
 pub struct Built<P: Manifold> {
     /// The curve.
     pub curve: Box<dyn Curve<Point = P>>,
+    /// The scene's points, normalised (and on S³ canonicalised when the scene asks for it).
+    pub inputs: Vec<P>,
     /// Derived control points (empty when the method has none).
     pub controls: Vec<P>,
     /// Auxiliary vertices solved for (empty when the method has none).
@@ -684,9 +686,10 @@ pub struct Built<P: Manifold> {
 }
 
 impl<P: ScenePoint> Built<P> {
-    fn new(curve: impl Curve<Point = P> + 'static) -> Self {
+    fn new(curve: impl Curve<Point = P> + 'static, inputs: Vec<P>) -> Self {
         Self {
             curve: Box::new(curve),
+            inputs,
             controls: Vec::new(),
             auxiliary: Vec::new(),
             info: Map::new(),
@@ -952,11 +955,11 @@ fn build_any<P: ScenePoint>(
     Ok(match spec.method {
         Method::Geodesic => {
             params.finish()?;
-            Built::new(GeodesicSpline::try_new(points, knots)?)
+            Built::new(GeodesicSpline::try_new(points.clone(), knots)?, points)
         }
         Method::Nlerp => {
             params.finish()?;
-            Built::new(NlerpSpline::try_new(points, knots)?)
+            Built::new(NlerpSpline::try_new(points.clone(), knots)?, points)
         }
         m => return Err(SceneError::NotImplemented(m)),
     })

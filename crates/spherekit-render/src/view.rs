@@ -1,0 +1,190 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The scene's `view` object: camera, plot strip, body frames, flattening accuracy.
+
+use serde_json::{Map, Value};
+use spherekit::UnitQuat;
+use spherekit::glam::{DQuat, DVec3};
+
+use crate::RenderError;
+
+/// What the strip under the sphere shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Plot {
+    /// Angular speed |ω(t)| (S³) or speed |p′(t)| (other spheres) against t.
+    Speed,
+    /// No strip.
+    None,
+}
+
+/// Rendering options read from a scene's `view`.
+///
+/// ```text
+/// "view": { "camera": [w, x, y, z] | { "yaw": deg, "pitch": deg },   default yaw 35°, pitch 20°
+///           "plot": "speed" | "none",            default "speed" on S3, "none" elsewhere
+///           "frames": N,                         S3: body triads at N parameters (default 0)
+///           "accuracy": radians }                curve flattening accuracy (default 1e-3)
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct View {
+    /// The camera orientation: its body x axis points right on screen, y up, z at the viewer.
+    pub camera: UnitQuat,
+    /// The plot strip.
+    pub plot: Plot,
+    /// Number of body-axis triads along each S³ curve.
+    pub frames: usize,
+    /// Largest angular deviation (radians) of the drawn polyline from the curve.
+    pub accuracy: f64,
+}
+
+/// The default flattening accuracy in radians: a quarter of a pixel at 1 000 px.
+pub const DEFAULT_ACCURACY: f64 = 1e-3;
+
+/// The most triads `view.frames` may ask for.
+pub const MAX_FRAMES: usize = 200;
+
+fn bad(field: &str, message: impl Into<String>) -> RenderError {
+    RenderError::View {
+        field: format!("view.{field}"),
+        message: message.into(),
+    }
+}
+
+impl View {
+    /// The camera looking at the origin from yaw `yaw` and pitch `pitch` (degrees), world z up.
+    #[must_use]
+    pub fn camera_from_yaw_pitch(yaw: f64, pitch: f64) -> UnitQuat {
+        let (y, p) = (yaw.to_radians(), pitch.to_radians());
+        // Rotate about z by 90° + yaw, then tilt about the camera's x axis by 90° − pitch, so
+        // that the camera's z axis points to (cos p cos y, cos p sin y, sin p) and its y axis is
+        // the projection of world z.
+        let a = DQuat::from_rotation_z(std::f64::consts::FRAC_PI_2 + y);
+        let b = DQuat::from_rotation_x(std::f64::consts::FRAC_PI_2 - p);
+        UnitQuat::try_new(a * b).unwrap_or(UnitQuat::IDENTITY)
+    }
+
+    /// Reads `view` with the defaults for a scene on S³ (`quaternions`) or another sphere.
+    ///
+    /// # Errors
+    ///
+    /// [`RenderError::View`] naming the bad field.
+    pub fn from_json(view: Option<&Value>, quaternions: bool) -> Result<Self, RenderError> {
+        let empty = Map::new();
+        let map = match view {
+            None => &empty,
+            Some(Value::Object(m)) => m,
+            Some(_) => return Err(bad("", "must be an object").trim_field()),
+        };
+        if let Some(k) = map
+            .keys()
+            .find(|k| !["camera", "plot", "frames", "accuracy"].contains(&k.as_str()))
+        {
+            return Err(bad(
+                k,
+                "unknown view option (camera, plot, frames, accuracy)",
+            ));
+        }
+        let camera = match map.get("camera") {
+            None => Self::camera_from_yaw_pitch(35.0, 20.0),
+            Some(Value::Array(a)) => {
+                let c: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
+                match c.as_deref() {
+                    Some(&[w, x, y, z]) => UnitQuat::from_wxyz([w, x, y, z])
+                        .map_err(|e| bad("camera", format!("quaternion {e}")))?,
+                    _ => {
+                        return Err(bad(
+                            "camera",
+                            "must be a quaternion [w, x, y, z] or {\"yaw\", \"pitch\"}",
+                        ));
+                    }
+                }
+            }
+            Some(Value::Object(o)) => {
+                let angle = |k: &str| -> Result<f64, RenderError> {
+                    match o.get(k) {
+                        None => Ok(0.0),
+                        Some(v) => v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                            bad(&format!("camera.{k}"), "must be a finite number of degrees")
+                        }),
+                    }
+                };
+                if let Some(k) = o.keys().find(|k| !["yaw", "pitch"].contains(&k.as_str())) {
+                    return Err(bad(
+                        &format!("camera.{k}"),
+                        "unknown camera option (yaw, pitch)",
+                    ));
+                }
+                Self::camera_from_yaw_pitch(angle("yaw")?, angle("pitch")?)
+            }
+            Some(_) => {
+                return Err(bad(
+                    "camera",
+                    "must be a quaternion [w, x, y, z] or {\"yaw\", \"pitch\"}",
+                ));
+            }
+        };
+        let plot = match map.get("plot") {
+            None if quaternions => Plot::Speed,
+            None => Plot::None,
+            Some(v) => match v.as_str() {
+                Some("speed") => Plot::Speed,
+                Some("none") => Plot::None,
+                _ => return Err(bad("plot", "must be \"speed\" or \"none\"")),
+            },
+        };
+        let frames = match map.get("frames") {
+            None => 0,
+            Some(v) => {
+                let n = v
+                    .as_u64()
+                    .filter(|n| *n <= MAX_FRAMES as u64)
+                    .ok_or_else(|| {
+                        bad(
+                            "frames",
+                            format!("must be a whole number from 0 to {MAX_FRAMES}"),
+                        )
+                    })?;
+                if !quaternions && n > 0 {
+                    return Err(bad("frames", "body triads are drawn for S3 scenes only"));
+                }
+                usize::try_from(n).unwrap_or(0)
+            }
+        };
+        let accuracy = match map.get("accuracy") {
+            None => DEFAULT_ACCURACY,
+            Some(v) => v
+                .as_f64()
+                .filter(|a| (1e-6..=0.1).contains(a))
+                .ok_or_else(|| bad("accuracy", "must be a number of radians from 1e-6 to 0.1"))?,
+        };
+        Ok(Self {
+            camera,
+            plot,
+            frames,
+            accuracy,
+        })
+    }
+
+    /// The camera's screen axes in world coordinates: right, up, and towards the viewer.
+    #[must_use]
+    pub fn axes(&self) -> [DVec3; 3] {
+        [
+            self.camera.rotate(DVec3::X),
+            self.camera.rotate(DVec3::Y),
+            self.camera.rotate(DVec3::Z),
+        ]
+    }
+}
+
+impl RenderError {
+    fn trim_field(self) -> Self {
+        match self {
+            Self::View { message, .. } => Self::View {
+                field: "view".into(),
+                message,
+            },
+            e => e,
+        }
+    }
+}

@@ -1,0 +1,48 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Native side of spherekit's rendering: PNG files for the `spherekit render` command and the
+//! golden-image harness ([`golden`]).
+
+pub mod golden;
+
+use tiny_skia::Pixmap;
+
+/// Encodes a pixmap as a compact PNG: RGB when every pixel is opaque (the renderer's images
+/// are), RGBA otherwise, with the strongest deflate setting of the `png` crate.
+///
+/// # Errors
+///
+/// The encoder's error (it only fails on I/O, which a `Vec` does not have).
+pub fn encode_png(pixmap: &Pixmap) -> Result<Vec<u8>, png::EncodingError> {
+    let rgba = pixmap.clone().take_demultiplied();
+    let opaque = rgba.chunks_exact(4).all(|p| p[3] == 0xff);
+    let (data, color) = if opaque {
+        let rgb: Vec<u8> = rgba
+            .chunks_exact(4)
+            .flat_map(|p| [p[0], p[1], p[2]])
+            .collect();
+        (rgb, png::ColorType::Rgb)
+    } else {
+        (rgba, png::ColorType::Rgba)
+    };
+    let mut out = Vec::new();
+    {
+        let mut encoder = png::Encoder::new(&mut out, pixmap.width(), pixmap.height());
+        encoder.set_color(color);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_compression(png::Compression::High);
+        let mut writer = encoder.write_header()?;
+        writer.write_image_data(&data)?;
+    }
+    Ok(out)
+}
+
+/// Decodes a PNG (8-bit RGB or RGBA) into a pixmap.
+///
+/// # Errors
+///
+/// A message naming what is wrong with the data.
+pub fn decode_png(bytes: &[u8]) -> Result<Pixmap, String> {
+    Pixmap::decode_png(bytes).map_err(|e| e.to_string())
+}
