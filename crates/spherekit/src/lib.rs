@@ -74,6 +74,7 @@ mod geodesic;
 mod knots;
 mod manifold;
 mod math;
+mod rotation;
 mod s2;
 mod s3;
 mod sn;
@@ -84,6 +85,9 @@ pub use error::{PointError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
 pub use knots::Knots;
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
+pub use rotation::{
+    ROTATION_TOLERANCE, RotationError, rodrigues_compose, rotation_matrix_from_rodrigues,
+};
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
 pub use sn::SnPoint;
