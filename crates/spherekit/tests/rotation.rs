@@ -192,8 +192,31 @@ fn non_unit_quaternion_matrix_divided_by_norm() {
         let p = rng.vec3(1.0);
         let conj = big.conjugate() / (s * s);
         let lhs = (big * DQuat::from_xyzw(p.x, p.y, p.z, 0.0) * conj).xyz();
-        // Build (3.46) on the scaled components through the unit matrix times N(Q).
-        let rhs = q.to_rotation_matrix() * (s * s) * p / (s * s);
+        // (3.46) written out on the non-unit components, divided by N(Q).
+        let (w, x, y, z) = (big.w, big.x, big.y, big.z);
+        let m346 = DMat3::from_cols_array_2d(&[
+            [
+                w * w + x * x - y * y - z * z,
+                2.0 * (x * y - w * z),
+                2.0 * (x * z + w * y),
+            ],
+            [
+                2.0 * (x * y + w * z),
+                w * w - x * x + y * y - z * z,
+                2.0 * (y * z - w * x),
+            ],
+            [
+                2.0 * (x * z - w * y),
+                2.0 * (y * z + w * x),
+                w * w - x * x - y * y + z * z,
+            ],
+        ])
+        .transpose(); // rows as printed
+        let rhs = m346 * p / big.length_squared();
+        assert!(
+            mat_err(m346 / big.length_squared(), q.to_rotation_matrix()) < 1e-15,
+            "(3.46)"
+        );
         assert!((lhs - rhs).length() < 1e-14, "non-unit action");
     }
 }
