@@ -78,6 +78,7 @@ mod manifold;
     reason = "some helpers are used only by constructions not yet merged"
 )]
 mod math;
+mod rotation;
 mod s2;
 mod s3;
 #[cfg(feature = "scene")]
@@ -90,6 +91,9 @@ pub use error::{PointError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
 pub use knots::Knots;
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
+pub use rotation::{
+    ROTATION_TOLERANCE, RotationError, rodrigues_compose, rotation_matrix_from_rodrigues,
+};
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
 pub use sn::SnPoint;
