@@ -68,17 +68,25 @@
 pub use glam;
 
 mod ambient;
+mod arc_blend;
+mod circle;
+mod corner_blend;
 mod curve;
 mod error;
+mod flow;
 mod geodesic;
 mod knots;
 mod manifold;
 mod math;
 mod s2;
 mod s3;
+mod smoothing;
 mod sn;
 
 pub use ambient::{Ambient, VecN};
+pub use arc_blend::{ArcBlend, MAX_BLEND_ORDER};
+pub use circle::CircleArc;
+pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
@@ -86,4 +94,5 @@ pub use knots::Knots;
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
+pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
 pub use sn::SnPoint;
