@@ -59,7 +59,12 @@ pub struct SmoothingPolynomials {
     order: usize,
     /// `2n·C(2n−1, n−1)`, the leading factor of `Sₙ′`.
     slope: f64,
+    /// `C(2n, i)` for `i = 0…2n` when `2n < TABLE`, else unused (computed on the fly).
+    binomials: [f64; TABLE],
 }
+
+/// Orders with `2n < TABLE` (all the spline orders) keep their binomial coefficients.
+const TABLE: usize = 2 * crate::arc_blend::MAX_BLEND_ORDER + 1;
 
 impl SmoothingPolynomials {
     /// The largest supported order `n` (degree `2n + 1`).
@@ -82,9 +87,16 @@ impl SmoothingPolynomials {
             });
         }
         let n = order as f64;
+        let mut binomials = [0.0; TABLE];
+        if 2 * order < TABLE {
+            for (i, b) in binomials.iter_mut().enumerate().take(2 * order + 1) {
+                *b = binomial(2 * order, i);
+            }
+        }
         Ok(Self {
             order,
             slope: 2.0 * n * binomial(2 * order - 1, order - 1),
+            binomials,
         })
     }
 
@@ -105,6 +117,7 @@ impl SmoothingPolynomials {
         let n = self.order;
         let big = 2 * n;
         let v = 1.0 - u;
+        let table = big < TABLE;
         // Σ_{i} C(N,i) uⁱ v^{N−i} over i ≥ n (hi) and i < n (lo).
         if u <= 0.5 {
             // v^N · Σ C(N,i) rⁱ, r = u/v ≤ 1; Horner from i = N down to 0.
@@ -112,12 +125,15 @@ impl SmoothingPolynomials {
             let (mut hi, mut lo) = (0.0, 0.0);
             let mut c = 1.0; // C(N, i) for i = N
             for i in (0..=big).rev() {
+                if table {
+                    c = self.binomials[i];
+                }
                 if i >= n {
                     hi = hi * r + c;
                 } else {
                     lo = lo * r + c;
                 }
-                if i > 0 {
+                if i > 0 && !table {
                     c = c * i as f64 / (big - i + 1) as f64;
                 }
             }
@@ -130,12 +146,17 @@ impl SmoothingPolynomials {
             let (mut hi, mut lo) = (0.0, 0.0);
             let mut c = 1.0; // C(N, i) for i = 0
             for i in 0..=big {
+                if table {
+                    c = self.binomials[i];
+                }
                 if i >= n {
                     hi = hi * r + c;
                 } else {
                     lo = lo * r + c;
                 }
-                c = c * (big - i) as f64 / (i + 1) as f64;
+                if !table {
+                    c = c * (big - i) as f64 / (i + 1) as f64;
+                }
             }
             let un = ipow(u, big);
             // hi: terms i = n…N with r^{N−i}; lo: terms i = 0…n−1 with r^{N−i} = r^{n+1}·r^{n−1−i}.
@@ -187,8 +208,21 @@ impl SmoothingPolynomials {
     #[must_use]
     pub fn jets(self, u: f64) -> ([f64; 3], [f64; 3]) {
         let (hi, lo) = self.tails(u);
-        let s1 = self.s_derivative(u, 1);
-        let s2 = self.s_derivative(u, 2);
+        let n = self.order;
+        let v = 1.0 - u;
+        // S′ = c·u^{n−1}vⁿ, S″ = c·((n−1)u^{n−2}vⁿ − n·u^{n−1}v^{n−1}).
+        let (s1, s2) = if n == 1 {
+            (self.slope * v, -self.slope)
+        } else {
+            let un2 = ipow(u, n - 2);
+            let vn1 = ipow(v, n - 1);
+            let (un1, vn) = (un2 * u, vn1 * v);
+            let nf = n as f64;
+            (
+                self.slope * un1 * vn,
+                self.slope * ((nf - 1.0) * un2 * vn - nf * un1 * vn1),
+            )
+        };
         let w1 = [u * hi, hi + u * s1, u * s2 + 2.0 * s1];
         let w2 = [u * lo, lo - u * s1, -w1[2]];
         (w1, w2)
