@@ -74,14 +74,14 @@ pub(crate) fn check_neighbours<P: Manifold>(points: &[P], min: usize) -> Result<
 ///
 /// On S² ([`S2Point`](crate::S2Point)) `𝒢_j = R(â_j, ·)`, the rotation about the circle's axis.
 /// On S³ ([`UnitQuat`](crate::UnitQuat)) `𝒢_j` is the simple rotation of ℝ⁴ in the circle's
-/// plane: the frame-consistent form that `pobegailo-s3.md` makes normative **[D]**. The book's
+/// plane: the frame-consistent form that `pobegailo-s3.md` makes normative **\[D\]**. The book's
 /// literal Procedure 9.4 applies circle `i−1`'s rotation in circle `i`'s frame and is only C⁰
 /// . Keys are used as given (no sign flips): the spline interpolates these points of S³.
 /// The same construction works on S^m ([`SnPoint`](crate::SnPoint)).
 ///
 /// Readings of the book followed here (spec §13 items 12–17 of `pobegailo-s2.md`, A-10, A-11,
-/// A-19 of `pobegailo-s3.md`): the forward circle carries `w₁` **[I]**; the triple of axis `j` is
-/// `(p_j, p_{j+1}, p_{j+2})` **[I]**; knots by Algorithm 8.1 (the §7.10 recurrence is shifted by
+/// A-19 of `pobegailo-s3.md`): the forward circle carries `w₁` **\[I\]**; the triple of axis `j` is
+/// `(p_j, p_{j+1}, p_{j+2})` **\[I\]**; knots by Algorithm 8.1 (the §7.10 recurrence is shifted by
 /// one index) also on S³, where the book gives none; `k = 2` builds no blended segment.
 ///
 /// Antipodal neighbours are rejected (on S³ they are the same orientation); the spec allows them

@@ -133,7 +133,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// with simple rotations (the S² construction; also valid on S³ and S^m).
 ///
 /// Source: the monograph (seed 002) §8.5–8.8 (eq. 8.19–8.22, Algorithm 8.2); spec
-/// `pobegailo-s2.md` §8, §9 and the several-corner extension §9.4 **[I]** (the book treats one
+/// `pobegailo-s2.md` §8, §9 and the several-corner extension §9.4 **\[I\]** (the book treats one
 /// corner). Edge `j` is the minor great-circle arc `P_j → P_{j+1}` with angle `Θ_j` and rotation
 /// group `R_j` (`R(ê_j, ·)` on S²). Each interior vertex `P_j` gets a corner blend that starts
 /// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`):
@@ -273,7 +273,7 @@ impl<P: Manifold> Curve for CornerBlend<P> {
 /// quaternions, with the rotations applied in the base frame (left multiplication).
 ///
 /// Source: the monograph (seed 002) §9.5–9.8 (eq. 9.18–9.21); spec `pobegailo-s3.md`
-/// Algorithm 6, extended to several corners as in `pobegailo-s2.md` §9.4 **[I]**. Edge `j` is
+/// Algorithm 6, extended to several corners as in `pobegailo-s2.md` §9.4 **\[I\]**. Edge `j` is
 /// the great-circle arc of S³ from `q_j` to `q_{j+1}`, `e_{n_j}(s)·q_j` with
 /// `e_n(s) = cos s + sin s·n` and `s ∈ [0, Ω_j]` (`Ω_j` the angle on S³, half the rotation angle;
 /// this is slerp; keys are used as given, so canonicalise with [`unflip`](crate::unflip) for the

@@ -859,3 +859,48 @@ fn corner_blend_bad_input() {
         SplineError::Antipodal { index: 0 }
     );
 }
+
+#[test]
+fn smoothing_matches_the_bernstein_definition_up_to_order_10() {
+    // §3.1: w1 = Σ_{j=n+1}^{2n+1} j/(2n+1)·b_{j,2n+1}, w2 = Σ_{j=1}^{n} j/(2n+1)·b_{j,2n+1}.
+    let binom = |n: u64, k: u64| (0..k).fold(1.0, |c, i| c * (n - i) as f64 / (i + 1) as f64);
+    for n in 1..=10_u64 {
+        let w = SmoothingPolynomials::try_new(n as usize).unwrap();
+        let big = 2 * n + 1;
+        for j in 0..=20 {
+            let u = f64::from(j) / 20.0;
+            let b = |i: u64| binom(big, i) * (1.0 - u).powi((big - i) as i32) * u.powi(i as i32);
+            let w1: f64 = (n + 1..=big).map(|i| i as f64 / big as f64 * b(i)).sum();
+            let w2: f64 = (1..=n).map(|i| i as f64 / big as f64 * b(i)).sum();
+            assert!(
+                (w.w1(u) - w1).abs() < 1e-14 && (w.w2(u) - w2).abs() < 1e-14,
+                "n = {n}, u = {u}"
+            );
+        }
+    }
+}
+
+#[test]
+fn corner_blend_backtracking_vertex_stays_finite_and_smooth() {
+    // P₂ → P₃ goes back along the great circle of P₁ → P₂ (n̂ = −m̂), and also exactly back
+    // to P₁: the corner reverses direction on the great circle, through zero velocity.
+    for pts in [
+        vec![S2Point::X, S2Point::Y, p(1.0, 1.0, 0.0)],
+        vec![S2Point::X, S2Point::Y, S2Point::X],
+    ] {
+        let c = CornerBlend::try_new(pts, 2, 0.25).unwrap();
+        let k = c.knots();
+        check_continuity(&c, |t, s, m| c.derivatives(t, s, m), 2, &k[1..k.len() - 1]);
+        for j in 0..=200 {
+            let jet = c.jet(k[k.len() - 1] * f64::from(j) / 200.0);
+            assert!(
+                jet.point.as_dvec3().z.abs() < 1e-15,
+                "stays on the great circle"
+            );
+            assert!(
+                jet.velocity.is_finite() && jet.acceleration.is_finite(),
+                "finite"
+            );
+        }
+    }
+}
