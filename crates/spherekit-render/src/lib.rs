@@ -130,7 +130,7 @@ pub fn render_built(
     if matches!(scene.space, Space::Sn(m) if m != 1) {
         return Err(RenderError::Space(scene.space.name()));
     }
-    let view = View::from_json(scene.view.as_ref(), scene.space == Space::S3)?;
+    let view = View::from_json(scene.view.as_ref(), scene.space == Space::S3, facing(curves))?;
     let strip = if view.plot == Plot::Speed {
         size / 4
     } else {
@@ -192,6 +192,30 @@ pub fn render_built(
         }
     }
     Ok(pixmap)
+}
+
+/// The mean of the input points of curves on S² or S¹, for the default camera.
+fn facing(curves: &[BuiltCurve]) -> Option<DVec3> {
+    let mut sum = DVec3::ZERO;
+    let mut count = 0.0;
+    for c in curves {
+        match c {
+            BuiltCurve::S2(b) => {
+                for p in &b.inputs {
+                    sum += p.as_dvec3();
+                    count += 1.0;
+                }
+            }
+            BuiltCurve::Sn(b) => {
+                for p in &b.inputs {
+                    sum += DVec3::new(p.coords()[0], p.coords()[1], 0.0);
+                    count += 1.0;
+                }
+            }
+            BuiltCurve::S3(_) => return None,
+        }
+    }
+    (count > 0.0).then(|| sum / count)
 }
 
 /// Whether a method's input points lie on its curve (otherwise their polygon is drawn).

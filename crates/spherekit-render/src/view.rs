@@ -21,11 +21,15 @@ pub enum Plot {
 /// Rendering options read from a scene's `view`.
 ///
 /// ```text
-/// "view": { "camera": [w, x, y, z] | { "yaw": deg, "pitch": deg },   default yaw 35°, pitch 20°
+/// "view": { "camera": [w, x, y, z] | { "yaw": deg, "pitch": deg },   default: see below
 ///           "plot": "speed" | "none",            default "speed" on S3, "none" elsewhere
 ///           "frames": N,                         S3: body triads at N parameters (default 0)
 ///           "accuracy": radians }                curve flattening accuracy (default 1e-3)
 /// ```
+///
+/// Without `camera`, S² scenes are viewed from the direction of the mean of their points (world
+/// z up, at most 60° above or below the equator) so the data faces the reader; S³ scenes, and
+/// points whose mean is near the centre, from yaw 35°, pitch 20°.
 #[derive(Clone, Debug, PartialEq)]
 pub struct View {
     /// The camera orientation: its body x axis points right on screen, y up, z at the viewer.
@@ -64,12 +68,17 @@ impl View {
         UnitQuat::try_new(a * b).unwrap_or(UnitQuat::IDENTITY)
     }
 
-    /// Reads `view` with the defaults for a scene on S³ (`quaternions`) or another sphere.
+    /// Reads `view` with the defaults for a scene on S³ (`quaternions`) or another sphere whose
+    /// points have the (unnormalised) mean `facing`.
     ///
     /// # Errors
     ///
     /// [`RenderError::View`] naming the bad field.
-    pub fn from_json(view: Option<&Value>, quaternions: bool) -> Result<Self, RenderError> {
+    pub fn from_json(
+        view: Option<&Value>,
+        quaternions: bool,
+        facing: Option<DVec3>,
+    ) -> Result<Self, RenderError> {
         let empty = Map::new();
         let map = match view {
             None => &empty,
@@ -86,7 +95,14 @@ impl View {
             ));
         }
         let camera = match map.get("camera") {
-            None => Self::camera_from_yaw_pitch(35.0, 20.0),
+            None => match facing.filter(|d| d.length() > 0.2) {
+                Some(d) => {
+                    let yaw = libm::atan2(d.y, d.x).to_degrees();
+                    let pitch = libm::atan2(d.z, d.truncate().length()).to_degrees();
+                    Self::camera_from_yaw_pitch(yaw, pitch.clamp(-60.0, 60.0))
+                }
+                None => Self::camera_from_yaw_pitch(35.0, 20.0),
+            },
             Some(Value::Array(a)) => {
                 let c: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
                 match c.as_deref() {

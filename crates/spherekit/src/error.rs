@@ -89,6 +89,12 @@ pub enum SplineError {
         /// What is wrong, for example `"must be positive"`.
         reason: String,
     },
+    /// Points `index` and `index + 2` coincide, so no unique circle passes through points
+    /// `index`, `index + 1`, `index + 2` (circle-blending methods).
+    NoCircle {
+        /// Index of the first point of the triple.
+        index: usize,
+    },
 }
 
 impl fmt::Display for SplineError {
@@ -121,6 +127,13 @@ impl fmt::Display for SplineError {
                 write!(f, "knots: expected {expected} knots, got {got}")
             }
             Self::InvalidParameter { name, reason } => write!(f, "params.{name} {reason}"),
+            Self::NoCircle { index } => write!(
+                f,
+                "points[{index}] and points[{}] coincide: no unique circle passes through points[{index}], points[{}] and points[{}]",
+                index + 2,
+                index + 1,
+                index + 2
+            ),
         }
     }
 }

@@ -68,8 +68,12 @@
 pub use glam;
 
 mod ambient;
+mod arc_blend;
+mod circle;
+mod corner_blend;
 mod curve;
 mod error;
+mod flow;
 mod geodesic;
 mod knots;
 mod manifold;
@@ -83,9 +87,13 @@ mod s2;
 mod s3;
 #[cfg(feature = "scene")]
 pub mod scene;
+mod smoothing;
 mod sn;
 
 pub use ambient::{Ambient, VecN};
+pub use arc_blend::{ArcBlend, MAX_BLEND_ORDER};
+pub use circle::CircleArc;
+pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
@@ -96,6 +104,7 @@ pub use rotation::{
 };
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
+pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
 pub use sn::SnPoint;
 
 /// The README's Rust example, compiled and run as a doctest.

@@ -40,8 +40,9 @@ use serde::Deserialize;
 use serde_json::{Map, Value, json};
 
 use crate::{
-    Ambient, Curve, GeodesicSpline, Manifold, NlerpSpline, PointError, S2Point, SnPoint,
-    SplineError, UnitQuat, VecN, angular_velocity_acceleration, unflip,
+    Ambient, ArcBlend, CornerBlend, CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GeodesicSpline,
+    MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, SnPoint, SplineError, UnitQuat,
+    VecN, angular_velocity_acceleration, unflip,
 };
 
 /// The most samples (or `eval_at` parameters) a scene may ask for.
@@ -263,18 +264,24 @@ impl Method {
     #[must_use]
     pub fn support(self) -> Support {
         match self {
-            Self::Geodesic | Self::Nlerp | Self::Bezier | Self::Beta | Self::CatmullRom => {
-                Support::All
-            }
+            Self::Geodesic
+            | Self::Nlerp
+            | Self::Bezier
+            | Self::Beta
+            | Self::CatmullRom
+            | Self::ArcBlend
+            | Self::CornerBlend => Support::All,
             Self::BezierKim | Self::BsplineKim | Self::Squad | Self::Gamma => Support::S3,
-            Self::ArcBlend | Self::CornerBlend => Support::S2S3,
         }
     }
 
     /// Whether the method is implemented in this build.
     #[must_use]
     pub fn is_implemented(self) -> bool {
-        matches!(self, Self::Geodesic | Self::Nlerp)
+        matches!(
+            self,
+            Self::Geodesic | Self::Nlerp | Self::ArcBlend | Self::CornerBlend
+        )
     }
 
     /// Parses a method id.
@@ -686,6 +693,11 @@ pub struct Built<P: Manifold> {
 }
 
 impl<P: ScenePoint> Built<P> {
+    fn with_info(mut self, key: &str, value: Value) -> Self {
+        self.info.insert(key.into(), value);
+        self
+    }
+
     fn new(curve: impl Curve<Point = P> + 'static, inputs: Vec<P>) -> Self {
         Self {
             curve: Box::new(curve),
@@ -933,6 +945,20 @@ impl<'a> Params<'a> {
         }
     }
 
+    /// `params.order`, the continuity order n of Pobegailo's blends (default 2).
+    fn order(&mut self) -> Result<usize, SceneError> {
+        let n = self.integer("order", 2)?;
+        usize::try_from(n)
+            .ok()
+            .filter(|n| (1..=MAX_BLEND_ORDER).contains(n))
+            .ok_or_else(|| {
+                field_error(
+                    "params.order",
+                    format!("must be a whole number from 1 to {MAX_BLEND_ORDER}, got {n}"),
+                )
+            })
+    }
+
     /// Rejects keys no accessor asked for.
     fn finish(self) -> Result<(), SceneError> {
         match self.map.keys().find(|k| !self.used.contains(&k.as_str())) {
@@ -949,7 +975,7 @@ impl<'a> Params<'a> {
 fn build_any<P: ScenePoint>(
     spec: &CurveSpec,
     points: Vec<P>,
-    params: Params<'_>,
+    mut params: Params<'_>,
 ) -> Result<Built<P>, SceneError> {
     let knots = spec.knots.clone();
     Ok(match spec.method {
@@ -961,15 +987,58 @@ fn build_any<P: ScenePoint>(
             params.finish()?;
             Built::new(NlerpSpline::try_new(points.clone(), knots)?, points)
         }
+        Method::ArcBlend => {
+            let order = params.order()?;
+            params.finish()?;
+            no_knots(spec)?;
+            let curve = ArcBlend::try_new(points.clone(), order)?;
+            let knots = curve.knots().to_vec();
+            Built::new(curve, points).with_info("knots", json!(knots))
+        }
+        Method::CornerBlend => {
+            let order = params.order()?;
+            let fraction = params.number("fraction", DEFAULT_CORNER_FRACTION)?;
+            params.finish()?;
+            no_knots(spec)?;
+            let curve = CornerBlend::try_new(points.clone(), order, fraction)?;
+            let knots = curve.knots().to_vec();
+            Built::new(curve, points).with_info("knots", json!(knots))
+        }
         m => return Err(SceneError::NotImplemented(m)),
     })
 }
 
-/// Methods on S³, falling back to [`build_any`].
+/// Methods with their own S³ form, falling back to [`build_any`].
 fn build_s3(
     spec: &CurveSpec,
     keys: Vec<UnitQuat>,
-    params: Params<'_>,
+    mut params: Params<'_>,
 ) -> Result<Built<UnitQuat>, SceneError> {
-    build_any(spec, keys, params)
+    Ok(match spec.method {
+        Method::CornerBlend => {
+            // The book's orientation construction (rotations act by left multiplication).
+            let order = params.order()?;
+            let fraction = params.number("fraction", DEFAULT_CORNER_FRACTION)?;
+            params.finish()?;
+            no_knots(spec)?;
+            let curve = CornerBlendS3::try_new(keys.clone(), order, fraction)?;
+            let knots = curve.knots().to_vec();
+            Built::new(curve, keys).with_info("knots", json!(knots))
+        }
+        _ => build_any(spec, keys, params)?,
+    })
+}
+
+/// Rejects `knots` for methods that compute their own.
+fn no_knots(spec: &CurveSpec) -> Result<(), SceneError> {
+    match spec.knots {
+        None => Ok(()),
+        Some(_) => Err(field_error(
+            "knots",
+            format!(
+                "method \"{}\" computes its own knots (reported in info.knots)",
+                spec.method.id()
+            ),
+        )),
+    }
 }

@@ -1,0 +1,401 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Pobegailo's corner smoothing of a great-circle polyline.
+
+use glam::{DQuat, DVec4};
+
+use crate::ambient::Ambient;
+use crate::arc_blend::{check_neighbours, check_order};
+use crate::curve::{Curve, Jet, Side};
+use crate::error::SplineError;
+use crate::flow::{Flow, LeftMultiplication, PlaneRotation, Segment, Weights};
+use crate::knots::Knots;
+use crate::manifold::{Manifold, geodesic_frame, renormalize};
+use crate::s3::UnitQuat;
+use crate::smoothing::SmoothingPolynomials;
+
+/// The default part of each edge used by a corner blend.
+pub const DEFAULT_CORNER_FRACTION: f64 = 0.25;
+
+/// The shared construction: edges `j` given by a flow whose orbit through `P_j` is the edge and
+/// its angle `Θ_j` in the flow's parameter.
+#[derive(Clone, Debug)]
+struct CornerCore<V, F> {
+    knots: Knots,
+    poly: SmoothingPolynomials,
+    fraction: f64,
+    segments: Vec<Segment<V, F>>,
+}
+
+fn check_fraction(fraction: f64) -> Result<(), SplineError> {
+    if fraction > 0.0 && fraction <= 0.5 {
+        Ok(())
+    } else {
+        Err(SplineError::InvalidParameter {
+            name: "fraction",
+            reason: format!("must be in (0, 0.5], got {fraction}"),
+        })
+    }
+}
+
+impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
+    /// `points` are the polyline's vertices `P_0 … P_M`, `edges[j]` the flow and angle of edge
+    /// `P_j → P_{j+1}`.
+    fn build(
+        points: &[V],
+        edges: Vec<(F, f64)>,
+        order: usize,
+        fraction: f64,
+    ) -> Result<Self, SplineError> {
+        let poly = check_order(order)?;
+        check_fraction(fraction)?;
+        let m = edges.len();
+        let mut segments = Vec::with_capacity(2 * m);
+        let mut t = vec![0.0];
+        let mut omega = 1.0;
+        let mut push = |segment: Segment<V, F>, t: &mut Vec<f64>| {
+            let last = t[t.len() - 1];
+            t.push(last + segment.width);
+            segments.push(segment);
+        };
+        for (j, (flow, theta)) in edges.iter().enumerate() {
+            // Straight part of edge j: from Q_j⁺ (or P_0) to Q_{j+1}⁻ (or P_M).
+            let cut_start = if j == 0 { 0.0 } else { fraction * theta };
+            let straight = if j == 0 || j + 1 == m {
+                (1.0 - fraction) * theta
+            } else {
+                (1.0 - 2.0 * fraction) * theta
+            };
+            if straight > 0.0 {
+                push(
+                    Segment {
+                        base: flow.apply(cut_start, &points[j]),
+                        outer: flow.clone(),
+                        outer_angle: straight,
+                        inner: None,
+                        weights: Weights::Linear,
+                        width: straight / omega,
+                    },
+                    &mut t,
+                );
+            }
+            if j + 1 < m {
+                // Corner at P_{j+1}: α = incoming cut on edge j, β = outgoing cut on edge j+1.
+                let (next, next_theta) = &edges[j + 1];
+                let alpha = fraction * theta;
+                let beta = fraction * next_theta;
+                push(
+                    Segment {
+                        base: points[j + 1].clone(),
+                        outer: next.clone(),
+                        outer_angle: beta,
+                        inner: Some((flow.clone(), alpha)),
+                        weights: Weights::Corner,
+                        width: alpha / omega,
+                    },
+                    &mut t,
+                );
+                omega *= beta / alpha;
+            }
+        }
+        let knots = Knots::try_new(t)?;
+        // Use the exact knot widths so that u = (t − t_i)/width is consistent with `locate`.
+        for (i, s) in segments.iter_mut().enumerate() {
+            s.width = knots.width(i);
+        }
+        Ok(Self {
+            knots,
+            poly,
+            fraction,
+            segments,
+        })
+    }
+
+    fn jet(&self, t: f64, side: Side) -> (V, V, V) {
+        let (i, s) = self.knots.locate(t, side);
+        let (p, d1, d2) = self.segments[i].jet(self.poly, s);
+        (renormalize(p), d1, d2)
+    }
+
+    fn derivatives(&self, t: f64, side: Side, order: usize) -> Vec<V> {
+        let (i, s) = self.knots.locate(t, side);
+        self.segments[i].derivatives(self.poly, s, order)
+    }
+
+    fn point(&self, t: f64) -> V {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        renormalize(self.segments[i].point(self.poly, s))
+    }
+}
+
+/// Pobegailo's Cⁿ corner smoothing of the great-circle polyline `P₀ → P₁ → … → P_M` on a sphere,
+/// with simple rotations (the S² construction; also valid on S³ and S^m).
+///
+/// Source: the monograph (seed 002) §8.5–8.8 (eq. 8.19–8.22, Algorithm 8.2); spec
+/// `pobegailo-s2.md` §8, §9 and the several-corner extension §9.4 **\[I\]** (the book treats one
+/// corner). Edge `j` is the minor great-circle arc `P_j → P_{j+1}` with angle `Θ_j` and rotation
+/// group `R_j` (`R(ê_j, ·)` on S²). Each interior vertex `P_j` gets a corner blend that starts
+/// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`):
+///
+/// ```text
+/// corner j:  r(u) = R_j(w₁,ₙ(u)·β_j) · R_{j−1}(−w₁,ₙ(1 − u)·α_j) · P_j        (8.19)
+/// edges:     r(u) = R_j(u·γ) Q,  the great-circle arcs between the corner blends
+/// durations: an arc of angle γ lasts γ/ω; corner j lasts α_j/ω and sets ω ← ω·β_j/α_j; ω₀ = 1
+/// ```
+///
+/// The curve starts at `P₀` at unit angular speed, follows the polyline's arcs **exactly**
+/// outside the corner blends, and is **Cⁿ** everywhere (generically not Cⁿ⁺¹ at the junctions).
+/// With `f = 0.5` consecutive corner blends meet directly. The corner blend does not in general
+/// pass through `P_j`; for a straight vertex (continuing on the same great circle) it does.
+///
+/// **Correction [B†].** The printed (8.21) applies the rotations to the cut point `Q₁`; the
+/// corner segment then misses `Q₁` and `Q₂`. The corner point `P_j` is used, as in (8.19).
+/// The inner weight is `w₁,ₙ(1 − u)`, not `w₂,ₙ(u)`.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{CornerBlend, Curve, Manifold, S2Point, Side};
+///
+/// let pts = vec![S2Point::X, S2Point::Y, S2Point::Z];
+/// let c = CornerBlend::try_new(pts, 2, 0.25).unwrap();
+/// let k = c.knots().to_vec();
+/// let pi = core::f64::consts::PI;
+/// // Unit angular speed: knots 0, 3π/8, π/2, 7π/8 for a 90° corner with fraction ¼.
+/// assert!((k[1] - 3.0 * pi / 8.0).abs() < 1e-15 && (k[3] - 7.0 * pi / 8.0).abs() < 1e-15);
+/// assert!(c.eval(k[0]).dist(&S2Point::X) < 1e-15 && c.eval(k[3]).dist(&S2Point::Z) < 1e-15);
+/// let (l, r) = (c.jet_at(k[2], Side::Left), c.jet_at(k[2], Side::Right));
+/// assert!((l.acceleration - r.acceleration).length() < 1e-13); // C²
+/// ```
+#[derive(Clone, Debug)]
+pub struct CornerBlend<P: Manifold> {
+    points: Vec<P>,
+    core: CornerCore<P::Vector, PlaneRotation<P::Vector>>,
+}
+
+impl<P: Manifold> CornerBlend<P> {
+    /// The default continuity order (C²).
+    pub const DEFAULT_ORDER: usize = 2;
+
+    /// Smooths the corners of the polyline through `points` with order `n = order` and the
+    /// given `fraction` of every edge used by each corner blend.
+    ///
+    /// # Errors
+    ///
+    /// - [`SplineError::TooFewPoints`] for fewer than 3 points;
+    /// - [`SplineError::InvalidParameter`] (`order`) unless `1 ≤ order ≤ 10`, (`fraction`)
+    ///   unless `0 < fraction ≤ 0.5`;
+    /// - [`SplineError::Coincident`] / [`SplineError::Antipodal`] for coincident or antipodal
+    ///   consecutive points (no unique great-circle edge).
+    pub fn try_new(points: Vec<P>, order: usize, fraction: f64) -> Result<Self, SplineError> {
+        check_neighbours(&points, 3)?;
+        let vs: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
+        let edges = vs
+            .windows(2)
+            .enumerate()
+            .map(|(index, w)| {
+                let (theta, e) =
+                    geodesic_frame(&w[0], &w[1]).ok_or(SplineError::Antipodal { index })?;
+                if theta <= 0.0 {
+                    return Err(SplineError::Coincident { index });
+                }
+                Ok((
+                    PlaneRotation {
+                        a: w[0].clone(),
+                        b: e,
+                    },
+                    theta,
+                ))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let core = CornerCore::build(&vs, edges, order, fraction)?;
+        Ok(Self { points, core })
+    }
+
+    /// The polyline's vertices.
+    #[must_use]
+    pub fn points(&self) -> &[P] {
+        &self.points
+    }
+
+    /// The joints: ends of the straight arcs and corner blends, increasing from 0.
+    #[must_use]
+    pub fn knots(&self) -> &[f64] {
+        self.core.knots.as_slice()
+    }
+
+    /// The continuity order `n`.
+    #[must_use]
+    pub fn order(&self) -> usize {
+        self.core.poly.order()
+    }
+
+    /// The part of each edge used by a corner blend.
+    #[must_use]
+    pub fn fraction(&self) -> f64 {
+        self.core.fraction
+    }
+
+    /// The derivatives of orders `0…=order` at `t` (exact, any order; one-sided at joints).
+    #[must_use]
+    pub fn derivatives(&self, t: f64, side: Side, order: usize) -> Vec<P::Vector> {
+        self.core.derivatives(t, side, order)
+    }
+}
+
+impl<P: Manifold> Curve for CornerBlend<P> {
+    type Point = P;
+
+    fn domain(&self) -> [f64; 2] {
+        self.core.knots.domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        self.core.knots.as_slice()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
+        let (p, velocity, acceleration) = self.core.jet(t, side);
+        Jet {
+            point: P::from_vector_unchecked(p),
+            velocity,
+            acceleration,
+        }
+    }
+
+    fn eval(&self, t: f64) -> P {
+        P::from_vector_unchecked(self.core.point(t))
+    }
+}
+
+/// Pobegailo's Cⁿ corner smoothing of an orientation polyline `q₀ → q₁ → … → q_M` of unit
+/// quaternions, with the rotations applied in the base frame (left multiplication).
+///
+/// Source: the monograph (seed 002) §9.5–9.8 (eq. 9.18–9.21); spec `pobegailo-s3.md`
+/// Algorithm 6, extended to several corners as in `pobegailo-s2.md` §9.4 **\[I\]**. Edge `j` is
+/// the great-circle arc of S³ from `q_j` to `q_{j+1}`, `e_{n_j}(s)·q_j` with
+/// `e_n(s) = cos s + sin s·n` and `s ∈ [0, Ω_j]` (`Ω_j` the angle on S³, half the rotation angle;
+/// this is slerp; keys are used as given, so canonicalise with [`unflip`](crate::unflip) for the
+/// shorter rotations). Corner `j`, with `α_j = f·Ω_{j−1}`, `β_j = f·Ω_j`:
+///
+/// ```text
+/// r(u) = e_{n_j}(w₁,ₙ(u)·β_j) · e_{n_{j−1}}(−w₁,ₙ(1 − u)·α_j) · q_j
+/// ```
+///
+/// which is `Rot(n_j, ·)·Rot(n_{j−1}, ·)·P_j` of the book with the base point corrected from
+/// `Q₁` to `P₂` (A-22). Durations and continuity as for [`CornerBlend`]; the first edge is
+/// traversed at unit speed on S³ (angular velocity of magnitude 2). The angular velocity is
+/// constant on the edges.
+///
+/// Unlike [`CornerBlend<UnitQuat>`], whose corner uses simple rotations of ℝ⁴, this is the
+/// book's orientation construction; the two agree outside the corner blends.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{CornerBlendS3, Curve, Manifold, Side, UnitQuat, glam::DVec3};
+///
+/// let q1 = UnitQuat::from_axis_angle(DVec3::X, core::f64::consts::FRAC_PI_2).unwrap();
+/// let q2 = UnitQuat::from_axis_angle(DVec3::Y, core::f64::consts::FRAC_PI_2).unwrap().mul(q1);
+/// let c = CornerBlendS3::try_new(vec![UnitQuat::IDENTITY, q1, q2], 2, 0.25).unwrap();
+/// let k = c.knots().to_vec();
+/// assert!(c.eval(k[3]).dist(&q2) < 1e-15);
+/// let (l, r) = (c.jet_at(k[1], Side::Left), c.jet_at(k[1], Side::Right));
+/// assert!((l.acceleration - r.acceleration).length() < 1e-13); // C²
+/// ```
+#[derive(Clone, Debug)]
+pub struct CornerBlendS3 {
+    points: Vec<UnitQuat>,
+    core: CornerCore<DVec4, LeftMultiplication>,
+}
+
+impl CornerBlendS3 {
+    /// The default continuity order (C²).
+    pub const DEFAULT_ORDER: usize = 2;
+
+    /// Smooths the corners of the orientation polyline through `points`.
+    ///
+    /// # Errors
+    ///
+    /// As [`CornerBlend::try_new`]; antipodal keys (the same orientation) are rejected.
+    pub fn try_new(
+        points: Vec<UnitQuat>,
+        order: usize,
+        fraction: f64,
+    ) -> Result<Self, SplineError> {
+        check_neighbours(&points, 3)?;
+        let vs: Vec<DVec4> = points.iter().map(Manifold::to_vector).collect();
+        let edges = vs
+            .windows(2)
+            .enumerate()
+            .map(|(index, w)| {
+                let (theta, e) =
+                    geodesic_frame(&w[0], &w[1]).ok_or(SplineError::Antipodal { index })?;
+                if theta <= 0.0 {
+                    return Err(SplineError::Coincident { index });
+                }
+                // e ⊥ q, so e·q̄ is a pure unit quaternion n with e = n·q.
+                let n = (DQuat::from_vec4(e) * DQuat::from_vec4(w[0]).conjugate()).xyz();
+                Ok((LeftMultiplication { axis: n }, theta))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let core = CornerCore::build(&vs, edges, order, fraction)?;
+        Ok(Self { points, core })
+    }
+
+    /// The polyline's vertices.
+    #[must_use]
+    pub fn points(&self) -> &[UnitQuat] {
+        &self.points
+    }
+
+    /// The joints: ends of the straight arcs and corner blends, increasing from 0.
+    #[must_use]
+    pub fn knots(&self) -> &[f64] {
+        self.core.knots.as_slice()
+    }
+
+    /// The continuity order `n`.
+    #[must_use]
+    pub fn order(&self) -> usize {
+        self.core.poly.order()
+    }
+
+    /// The part of each edge used by a corner blend.
+    #[must_use]
+    pub fn fraction(&self) -> f64 {
+        self.core.fraction
+    }
+
+    /// The derivatives of orders `0…=order` at `t` (exact, any order; one-sided at joints).
+    #[must_use]
+    pub fn derivatives(&self, t: f64, side: Side, order: usize) -> Vec<DVec4> {
+        self.core.derivatives(t, side, order)
+    }
+}
+
+impl Curve for CornerBlendS3 {
+    type Point = UnitQuat;
+
+    fn domain(&self) -> [f64; 2] {
+        self.core.knots.domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        self.core.knots.as_slice()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
+        let (p, velocity, acceleration) = self.core.jet(t, side);
+        Jet {
+            point: UnitQuat::from_vector_unchecked(p),
+            velocity,
+            acceleration,
+        }
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        UnitQuat::from_vector_unchecked(self.core.point(t))
+    }
+}
