@@ -1,1 +1,149 @@
-fn main() {}
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! `spherekit`: sample curves described by JSON scenes.
+//!
+//! ```text
+//! spherekit sample SCENE.json|- [--deriv] [--samples N]
+//! spherekit methods
+//! ```
+//!
+//! Bad input exits with status 2 and one line on stderr naming the offending field.
+
+use std::io::{Read, Write};
+use std::process::ExitCode;
+
+use spherekit::scene::{Method, Scene};
+
+const USAGE: &str = "\
+usage: spherekit <command> [options]
+
+commands:
+  sample SCENE.json [--deriv] [--samples N]
+      Sample the curve a scene describes and print one JSON object
+      (`-` reads the scene from standard input).
+      --deriv        also print velocity, acceleration (and angular velocity on S3)
+      --samples N    N uniform samples over the domain (overrides the scene)
+  methods
+      List the curve methods and the spaces each supports.
+  help
+      Show this text.";
+
+/// A failure with its exit status: 2 for bad input, 1 for an I/O failure writing output.
+struct Failure {
+    status: u8,
+    message: String,
+}
+
+fn bad(message: impl Into<String>) -> Failure {
+    Failure {
+        status: 2,
+        message: message.into(),
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) => {
+            eprintln!("error: {}", f.message);
+            ExitCode::from(f.status)
+        }
+    }
+}
+
+fn run(args: &[String]) -> Result<(), Failure> {
+    match args.first().map(String::as_str) {
+        Some("sample") => sample(&args[1..]),
+        Some("methods") if args.len() == 1 => {
+            methods();
+            Ok(())
+        }
+        Some("help" | "--help" | "-h") => {
+            println!("{USAGE}");
+            Ok(())
+        }
+        Some(other) => Err(bad(format!(
+            "unknown command or arguments \"{}\" (try `spherekit help`)",
+            if other == "methods" {
+                args.join(" ")
+            } else {
+                other.to_owned()
+            }
+        ))),
+        None => Err(bad("no command given (try `spherekit help`)")),
+    }
+}
+
+fn methods() {
+    for m in Method::ALL {
+        let status = if m.is_implemented() {
+            ""
+        } else {
+            "  (not implemented yet)"
+        };
+        println!(
+            "{:<14} {:<14} {}{status}",
+            m.id(),
+            m.support().describe(),
+            m.summary()
+        );
+    }
+}
+
+fn read_scene(path: &str) -> Result<String, Failure> {
+    if path == "-" {
+        let mut s = String::new();
+        std::io::stdin()
+            .read_to_string(&mut s)
+            .map_err(|e| bad(format!("cannot read the scene from standard input: {e}")))?;
+        Ok(s)
+    } else {
+        std::fs::read_to_string(path)
+            .map_err(|e| bad(format!("cannot read scene file {path}: {e}")))
+    }
+}
+
+fn sample(args: &[String]) -> Result<(), Failure> {
+    let mut path = None;
+    let mut deriv = false;
+    let mut samples = None;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--deriv" => deriv = true,
+            "--samples" => {
+                let v = it.next().ok_or_else(|| bad("--samples needs a number"))?;
+                let n: usize = v
+                    .parse()
+                    .map_err(|_| bad(format!("--samples: \"{v}\" is not a whole number")))?;
+                samples = Some(n);
+            }
+            s if s.starts_with("--") => return Err(bad(format!("unknown option {s}"))),
+            s if path.is_none() => path = Some(s.to_owned()),
+            s => return Err(bad(format!("unexpected argument \"{s}\""))),
+        }
+    }
+    let path = path.ok_or_else(|| bad("sample: give a scene file, or - for standard input"))?;
+    let text = read_scene(&path)?;
+    let mut scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
+    if let Some(n) = samples {
+        scene.set_samples(n).map_err(|e| {
+            bad(format!(
+                "--samples: {}",
+                e.to_string().trim_start_matches("samples: ")
+            ))
+        })?;
+    }
+    let curves = scene.build().map_err(|e| bad(e.to_string()))?;
+    let out = scene.sample_json(&curves, deriv);
+    let mut stdout = std::io::stdout().lock();
+    serde_json::to_writer(&mut stdout, &out)
+        .map_err(std::io::Error::from)
+        .and_then(|()| writeln!(stdout))
+        .map_err(|e| Failure {
+            status: 1,
+            message: format!("cannot write the output: {e}"),
+        })
+}

@@ -38,7 +38,7 @@ pub struct Jet<P: Manifold> {
 /// Parameters outside it are **clamped**: `eval(t)` for `t < t0` is `eval(t0)`, and the jet there
 /// is the one-sided jet at `t0` (derivatives are not zeroed). A NaN parameter is a caller bug
 /// (checked in debug builds); release builds treat it as `t0` so that no NaN is produced.
-pub trait Curve {
+pub trait Curve: core::fmt::Debug {
     /// The sphere the curve lies on.
     type Point: Manifold;
 

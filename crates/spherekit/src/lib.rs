@@ -75,9 +75,15 @@ mod geodesic;
 mod kim;
 mod knots;
 mod manifold;
+#[allow(
+    dead_code,
+    reason = "some helpers are used only by constructions not yet merged"
+)]
 mod math;
 mod s2;
 mod s3;
+#[cfg(feature = "scene")]
+pub mod scene;
 mod sn;
 
 pub use ambient::{Ambient, VecN};
@@ -91,3 +97,8 @@ pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
 pub use sn::SnPoint;
+
+/// The README's Rust example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeDoctests;

@@ -143,6 +143,9 @@ pub(crate) fn geodesic_frame<V: Ambient>(p: &V, q: &V) -> Option<(f64, V)> {
         }
         sum - p.clone() * (0.5 * s * s)
     };
+    // One Gram–Schmidt step removes the normal component left by rounding (which 1/sin θ
+    // would otherwise amplify for small θ).
+    let w = w.clone() - p.clone() * p.dot(&w);
     let wl = w.length();
     if wl == 0.0 {
         return Some((0.0, p.zeros_like()));

@@ -130,8 +130,12 @@ impl UnitQuat {
 
 /// # Algebra
 impl UnitQuat {
-    /// The Hamilton product `self · rhs`: as rotations, first `rhs`, then `self`.
+    /// The Hamilton product `self · rhs`: as rotations, first `rhs`, then `self`. Also `self * rhs`.
     #[must_use]
+    #[allow(
+        clippy::should_implement_trait,
+        reason = "inherent so callers need no trait import; `Mul` delegates here"
+    )]
     pub fn mul(self, rhs: Self) -> Self {
         Self(DQuat::from_vec4(renormalize(DVec4::from(self.0 * rhs.0))))
     }
@@ -148,8 +152,12 @@ impl UnitQuat {
         self.conjugate()
     }
 
-    /// The negation `−q`: the other quaternion of the same rotation.
+    /// The negation `−q`: the other quaternion of the same rotation. Also `-q`.
     #[must_use]
+    #[allow(
+        clippy::should_implement_trait,
+        reason = "inherent so callers need no trait import; `Neg` delegates here"
+    )]
     pub fn neg(self) -> Self {
         Self(-self.0)
     }
@@ -210,6 +218,20 @@ impl UnitQuat {
     }
 }
 
+impl core::ops::Mul for UnitQuat {
+    type Output = Self;
+    fn mul(self, rhs: Self) -> Self {
+        Self::mul(self, rhs)
+    }
+}
+
+impl core::ops::Neg for UnitQuat {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Self::neg(self)
+    }
+}
+
 impl Manifold for UnitQuat {
     type Vector = DVec4;
 
@@ -238,7 +260,7 @@ impl Manifold for UnitQuat {
 ///
 /// let q = UnitQuat::from_wxyz([0.9, 0.1, 0.0, 0.0]).unwrap();
 /// let mut keys = [UnitQuat::IDENTITY, q.neg(), q];
-/// assert_eq!(unflip(&mut keys), 2);
+/// assert_eq!(unflip(&mut keys), 1);
 /// assert_eq!(keys[1], q);
 /// assert_eq!(keys[2], q);
 /// ```

@@ -1,0 +1,371 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The `spherekit` command line: output shape, and one clear line with exit status 2 for every
+//! kind of bad input.
+
+#![allow(
+    clippy::unwrap_used,
+    clippy::missing_assert_message,
+    clippy::cast_possible_truncation,
+    reason = "tests: a panic is the failure report"
+)]
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+use serde_json::Value;
+
+fn spherekit(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_spherekit"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(stdin.as_bytes())
+        .unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn sample(scene: &str, extra: &[&str]) -> Value {
+    let mut args = vec!["sample", "-"];
+    args.extend_from_slice(extra);
+    let out = spherekit(&args, scene);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "failed: {stderr}");
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// Runs a bad scene and returns the single stderr line, checking status 2 and empty stdout.
+#[track_caller]
+fn reject(scene: &str, extra: &[&str]) -> String {
+    let mut args = vec!["sample", "-"];
+    args.extend_from_slice(extra);
+    let out = spherekit(&args, scene);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "scene {scene} should be rejected"
+    );
+    assert!(out.stdout.is_empty(), "no output on error");
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
+    assert!(stderr.starts_with("error: "), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    stderr.trim_end().to_owned()
+}
+
+fn all_finite(v: &Value) -> bool {
+    match v {
+        Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
+        Value::Array(a) => a.iter().all(all_finite),
+        Value::Object(o) => o.values().all(all_finite),
+        Value::Null => false,
+        _ => true,
+    }
+}
+
+const S2_SCENE: &str =
+    r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0],[0,0,1]],"samples":5}"#;
+
+#[test]
+fn sample_prints_the_documented_fields() {
+    let out = sample(S2_SCENE, &[]);
+    assert_eq!(out["space"], "S2");
+    assert_eq!(out["method"], "geodesic");
+    assert_eq!(out["domain"], serde_json::json!([0.0, 2.0]));
+    assert_eq!(out["t"], serde_json::json!([0.0, 0.5, 1.0, 1.5, 2.0]));
+    assert_eq!(out["points"].as_array().unwrap().len(), 5);
+    assert_eq!(out["points"][2], serde_json::json!([0.0, 1.0, 0.0]));
+    assert!(out.get("velocity").is_none());
+    let d = sample(S2_SCENE, &["--deriv", "--samples", "9"]);
+    assert_eq!(d["t"].as_array().unwrap().len(), 9);
+    assert_eq!(d["velocity"].as_array().unwrap().len(), 9);
+    assert_eq!(d["acceleration"].as_array().unwrap().len(), 9);
+    assert!(
+        d.get("angular_velocity").is_none(),
+        "S2 has no angular velocity"
+    );
+    assert!(all_finite(&d));
+}
+
+#[test]
+fn quaternion_scenes_report_angular_velocity_scalar_first() {
+    // A rotation by 1 rad about z over t ∈ [0, 2]: ω = (0, 0, 0.5).
+    let h = 0.5_f64.cos();
+    let scene = format!(
+        r#"{{"space":"S3","method":"geodesic","points":[[1,0,0,0],[{h},0,0,{}]],"knots":[0,2],"samples":3}}"#,
+        0.5_f64.sin()
+    );
+    let out = sample(&scene, &["--deriv"]);
+    let w = &out["angular_velocity"][1];
+    assert!((w[2].as_f64().unwrap() - 0.5).abs() < 1e-14, "{w}");
+    assert!(w[0].as_f64().unwrap().abs() < 1e-15);
+    let p = &out["points"][2];
+    assert!(
+        (p[0].as_f64().unwrap() - h).abs() < 1e-15,
+        "scalar first: {p}"
+    );
+    // velocity at the start is along +z, in [w, x, y, z] order.
+    assert!(out["velocity"][0][3].as_f64().unwrap() > 0.2);
+}
+
+#[test]
+fn canonicalize_controls_the_double_cover() {
+    let scene = |c: &str| {
+        format!(r#"{{"space":"S3","method":"geodesic","points":[[1,0,0,0],[-0.9,0,0,-0.1]]{c}}}"#)
+    };
+    let out = sample(&scene(""), &["--samples", "3"]);
+    // Flipped: the second key comes out as +(0.9, 0, 0, 0.1) normalised.
+    assert!(out["points"][2][0].as_f64().unwrap() > 0.99);
+    let out = sample(&scene(r#","canonicalize":false"#), &["--samples", "3"]);
+    assert!(
+        out["points"][2][0].as_f64().unwrap() < -0.99,
+        "kept as given"
+    );
+}
+
+#[test]
+fn eval_at_and_sn_scenes() {
+    let out = sample(
+        r#"{"space":"S5","method":"nlerp","points":[[1,0,0,0,0,0],[0,0,0,0,0,3]],"eval_at":[0.5,-1,2]}"#,
+        &[],
+    );
+    assert_eq!(out["space"], "S5");
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    let p = out["points"][0].as_array().unwrap();
+    assert_eq!(p.len(), 6);
+    assert!(
+        (p[0].as_f64().unwrap() - s).abs() < 1e-15 && (p[5].as_f64().unwrap() - s).abs() < 1e-15
+    );
+    assert_eq!(out["points"][1][0], 1.0, "clamped below the domain");
+    assert_eq!(out["points"][2][5], 1.0, "clamped above the domain");
+}
+
+#[test]
+fn scene_from_a_file_and_methods_list() {
+    let dir = std::env::temp_dir().join(format!("spherekit-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("scene.json");
+    std::fs::write(&path, S2_SCENE).unwrap();
+    let out = spherekit(&["sample", path.to_str().unwrap()], "");
+    assert!(out.status.success());
+    let missing = spherekit(&["sample", dir.join("nope.json").to_str().unwrap()], "");
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("cannot read scene file"));
+    let methods = spherekit(&["methods"], "");
+    let text = String::from_utf8(methods.stdout).unwrap();
+    for id in [
+        "geodesic",
+        "nlerp",
+        "bezier",
+        "squad",
+        "catmull-rom",
+        "gamma",
+        "beta",
+        "arc-blend",
+    ] {
+        assert!(text.contains(id), "{id} listed");
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn bad_input_exits_2_with_one_line_naming_the_field() {
+    let cases: &[(&str, &[&str], &str)] = &[
+        ("{", &[], "invalid scene JSON"),
+        ("", &[], "invalid scene JSON"),
+        (
+            r#"{"space":"S2","method":"geodesic"}"#,
+            &[],
+            "missing field `points`",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"colour":1}"#,
+            &[],
+            "unknown field `colour`",
+        ),
+        (
+            r#"{"space":"S2","method":"spline","points":[[1,0,0],[0,1,0]]}"#,
+            &[],
+            "method: unknown method \"spline\"",
+        ),
+        (
+            r#"{"space":"S9999","method":"geodesic","points":[]}"#,
+            &[],
+            "space: \"S9999\"",
+        ),
+        (
+            r#"{"space":"R3","method":"geodesic","points":[]}"#,
+            &[],
+            "space: \"R3\" is not a sphere",
+        ),
+        (
+            r#"{"space":"S2","method":"squad","points":[[1,0,0],[0,1,0]]}"#,
+            &[],
+            "method: \"squad\" works on S3, not S2",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1]]}"#,
+            &[],
+            "points[1]: has 2 coordinates, S2 points have 3",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,0,0]]}"#,
+            &[],
+            "points[1] has zero length",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[1e400,0,0]]}"#,
+            &[],
+            "invalid scene JSON",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[NaN,0,0]]}"#,
+            &[],
+            "invalid scene JSON",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0]]}"#,
+            &[],
+            "points: this method needs at least 2 points, got 1",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[]}"#,
+            &[],
+            "needs at least 2 points, got 0",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0],[-1,0,0]],"knots":[0,2,1]}"#,
+            &[],
+            "knots[2] is not greater than knots[1]",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"knots":[0,1,2]}"#,
+            &[],
+            "knots: expected 2 knots, got 3",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[-1,0,0]]}"#,
+            &[],
+            "points[0] and points[1] are antipodal",
+        ),
+        (
+            r#"{"space":"S3","method":"geodesic","points":[[1,0,0,0],[-1,0,0,0]],"canonicalize":false}"#,
+            &[],
+            "points[0] and points[1] are antipodal",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"canonicalize":true}"#,
+            &[],
+            "canonicalize: applies to S3",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"samples":0}"#,
+            &[],
+            "samples: must be a whole number from 2",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"samples":1e12}"#,
+            &[],
+            "samples: must be a whole number from 2 to 1000000",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"samples":2.5}"#,
+            &[],
+            "samples: must be a whole number",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"eval_at":[]}"#,
+            &[],
+            "eval_at: must have 1 to",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"samples":3,"eval_at":[0]}"#,
+            &[],
+            "eval_at: give either samples or eval_at",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"params":{"tension":1}}"#,
+            &[],
+            "params.tension: unknown parameter for method \"geodesic\"",
+        ),
+        (
+            S2_SCENE,
+            &["--samples", "x"],
+            "--samples: \"x\" is not a whole number",
+        ),
+        (
+            S2_SCENE,
+            &["--samples", "1"],
+            "--samples: must be a whole number from 2",
+        ),
+        (S2_SCENE, &["--bogus"], "unknown option --bogus"),
+        (
+            r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]]},{"method":"nlerp","points":[[1,0,0],[-1,0,0]]}]}"#,
+            &[],
+            "curves[1].points[0] and points[1] are antipodal",
+        ),
+        (
+            r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]],"color":"red"}]}"#,
+            &[],
+            "curves[0].color: \"red\" is not a colour",
+        ),
+        (
+            r#"{"space":"S2","curves":[{"method":"squad","points":[[1,0,0],[0,1,0]]}]}"#,
+            &[],
+            "curves[0].method: \"squad\" works on S3, not S2",
+        ),
+        (
+            r#"{"space":"S2","curves":[]}"#,
+            &[],
+            "curves: must list at least one curve",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"curves":[]}"#,
+            &[],
+            "curves: give either",
+        ),
+    ];
+    for (scene, extra, expected) in cases {
+        let line = reject(scene, extra);
+        assert!(
+            line.contains(expected),
+            "for {scene}: got `{line}`, expected `{expected}`"
+        );
+    }
+    // Deeply nested JSON is rejected by the parser's depth limit, not by a stack overflow.
+    let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+    assert!(reject(&deep, &[]).contains("invalid scene JSON"));
+}
+
+#[test]
+fn several_curves_in_one_scene() {
+    let out = sample(
+        r##"{"space":"S2","samples":3,"curves":[
+            {"method":"geodesic","points":[[1,0,0],[0,1,0]],"color":"#d55e00"},
+            {"method":"nlerp","points":[[1,0,0],[0,0,1]],"knots":[0,4]}]}"##,
+        &[],
+    );
+    let curves = out["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 2);
+    assert_eq!(curves[0]["method"], "geodesic");
+    assert_eq!(curves[1]["domain"], serde_json::json!([0.0, 4.0]));
+    assert_eq!(curves[1]["points"][2], serde_json::json!([0.0, 0.0, 1.0]));
+}
+
+#[test]
+fn unknown_commands() {
+    for args in [&["frobnicate"][..], &[], &["methods", "extra"], &["sample"]] {
+        let out = spherekit(args, "");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
+    }
+    assert!(spherekit(&["help"], "").status.success());
+}

@@ -1,0 +1,972 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The JSON scene format: one description of a curve shared by the `spherekit` CLI, the
+//! browser playground and the golden-image tests.
+//!
+//! ```text
+//! { "space": "S2" | "S3" | "S<m>",      S3: quaternions [w, x, y, z]; S2: [x, y, z]; S<m>: m+1 numbers
+//!   "method": "<method id>",            see Method
+//!   "points": [[...], ...],             normalised on input; a point that cannot be is an error
+//!   "knots": [...],                     optional, strictly increasing
+//!   "params": { ... },                  optional, method specific
+//!   "canonicalize": true | false,       optional; S3 only; default true (see unflip)
+//!   "samples": 256,                     optional: uniform parameters over the domain, ends included
+//!   "eval_at": [t, ...],                optional: explicit parameters instead of "samples"
+//!   "view": { ... } }                   optional, used by rendering
+//! ```
+//!
+//! Unknown fields are rejected, so a misspelt option is an error rather than silently ignored.
+//!
+//! # Examples
+//!
+//! ```
+//! use spherekit::scene::Scene;
+//!
+//! let scene = Scene::from_json(r#"{ "space": "S2", "method": "geodesic",
+//!     "points": [[1, 0, 0], [0, 2, 0]], "samples": 3 }"#).unwrap();
+//! let out = scene.sample_json(&scene.build().unwrap(), false);
+//! assert_eq!(out["t"], serde_json::json!([0.0, 0.5, 1.0]));
+//! assert_eq!(out["points"][2], serde_json::json!([0.0, 1.0, 0.0]));
+//!
+//! let err = Scene::from_json(r#"{ "space": "S2", "method": "geodesic",
+//!     "points": [[1, 0, 0], [0, 0, 0]] }"#).unwrap().build().unwrap_err();
+//! assert_eq!(err.to_string(), "points[1] has zero length and cannot be normalised");
+//! ```
+
+use core::fmt;
+
+use serde::Deserialize;
+use serde_json::{Map, Value, json};
+
+use crate::{
+    Ambient, Curve, GeodesicSpline, Manifold, NlerpSpline, PointError, S2Point, SnPoint,
+    SplineError, UnitQuat, VecN, angular_velocity_acceleration, unflip,
+};
+
+/// The most samples (or `eval_at` parameters) a scene may ask for.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// The number of samples when a scene gives neither `samples` nor `eval_at`.
+pub const DEFAULT_SAMPLES: usize = 101;
+
+/// The largest sphere dimension m accepted in `"S<m>"`.
+pub const MAX_DIMENSION: usize = 1024;
+
+/// Why a scene could not be read or built. The `Display` text is one line naming the field.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SceneError {
+    /// The text is not valid JSON or does not have the scene's shape.
+    Json(String),
+    /// A field has a bad value.
+    Field {
+        /// The field, as a JSON path such as `points[2]` or `params.gamma`.
+        field: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// The curve could not be built.
+    Spline(SplineError),
+    /// The method id is known but not implemented yet.
+    NotImplemented(Method),
+    /// An error in one curve of a scene's `curves` list.
+    InCurve {
+        /// Index into `curves`.
+        index: usize,
+        /// The error.
+        error: Box<SceneError>,
+    },
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Json(m) => write!(f, "invalid scene JSON: {m}"),
+            Self::Field { field, message } => write!(f, "{field}: {message}"),
+            Self::Spline(e) => write!(f, "{e}"),
+            Self::NotImplemented(m) => {
+                write!(f, "method: \"{}\" is not implemented yet", m.id())
+            }
+            Self::InCurve { index, error } => write!(f, "curves[{index}].{error}"),
+        }
+    }
+}
+
+impl core::error::Error for SceneError {}
+
+impl From<SplineError> for SceneError {
+    fn from(e: SplineError) -> Self {
+        Self::Spline(e)
+    }
+}
+
+fn field_error(field: impl Into<String>, message: impl Into<String>) -> SceneError {
+    SceneError::Field {
+        field: field.into(),
+        message: message.into(),
+    }
+}
+
+/// The sphere a scene lives on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Space {
+    /// Directions, points `[x, y, z]`.
+    S2,
+    /// Orientations, unit quaternions `[w, x, y, z]`.
+    S3,
+    /// S^m for any other m ≥ 1, points of m + 1 coordinates.
+    Sn(usize),
+}
+
+impl Space {
+    /// Parses `"S2"`, `"S3"` or `"S<m>"`.
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError::Field`] on `space` for anything else.
+    pub fn parse(s: &str) -> Result<Self, SceneError> {
+        let bad = || {
+            field_error(
+                "space",
+                format!(
+                    "\"{s}\" is not a sphere: use \"S2\", \"S3\" or \"S<m>\" with 1 ≤ m ≤ {MAX_DIMENSION}"
+                ),
+            )
+        };
+        let m: usize = s
+            .strip_prefix('S')
+            .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            .and_then(|d| d.parse().ok())
+            .ok_or_else(bad)?;
+        match m {
+            2 => Ok(Self::S2),
+            3 => Ok(Self::S3),
+            1..=MAX_DIMENSION => Ok(Self::Sn(m)),
+            _ => Err(bad()),
+        }
+    }
+
+    /// The number of coordinates of a point.
+    #[must_use]
+    pub fn coords(self) -> usize {
+        match self {
+            Self::S2 => 3,
+            Self::S3 => 4,
+            Self::Sn(m) => m + 1,
+        }
+    }
+
+    /// The scene name, `"S2"`, `"S3"` or `"S<m>"`.
+    #[must_use]
+    pub fn name(self) -> String {
+        match self {
+            Self::S2 => "S2".into(),
+            Self::S3 => "S3".into(),
+            Self::Sn(m) => format!("S{m}"),
+        }
+    }
+}
+
+/// The curve constructions a scene can name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Method {
+    /// Piecewise geodesic (slerp) through the points.
+    Geodesic,
+    /// Piecewise normalised-linear interpolation through the points.
+    Nlerp,
+    /// One spherical Bézier curve by de Casteljau.
+    Bezier,
+    /// Kim–Kim–Shin's cumulative Bézier quaternion curve.
+    BezierKim,
+    /// Kim–Kim–Shin's cumulative cubic B-spline quaternion curve.
+    BsplineKim,
+    /// Shoemake's squad.
+    Squad,
+    /// Catmull-Rom by slerps.
+    CatmullRom,
+    /// Gamma quaternion spline.
+    Gamma,
+    /// Spherical Beta spline.
+    Beta,
+    /// Pobegailo's interpolating spline by blending circle arcs.
+    ArcBlend,
+    /// Pobegailo's corner smoothing of a great-circle polyline.
+    CornerBlend,
+}
+
+/// Which spaces a method supports.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Support {
+    /// S², S³ and every S^m.
+    All,
+    /// S³ only.
+    S3,
+    /// S² and S³.
+    S2S3,
+}
+
+impl Method {
+    /// Every method, in the order `spherekit methods` lists them.
+    pub const ALL: [Self; 11] = [
+        Self::Geodesic,
+        Self::Nlerp,
+        Self::Bezier,
+        Self::BezierKim,
+        Self::BsplineKim,
+        Self::Squad,
+        Self::CatmullRom,
+        Self::Gamma,
+        Self::Beta,
+        Self::ArcBlend,
+        Self::CornerBlend,
+    ];
+
+    /// The scene id.
+    #[must_use]
+    pub fn id(self) -> &'static str {
+        match self {
+            Self::Geodesic => "geodesic",
+            Self::Nlerp => "nlerp",
+            Self::Bezier => "bezier",
+            Self::BezierKim => "bezier-kim",
+            Self::BsplineKim => "bspline-kim",
+            Self::Squad => "squad",
+            Self::CatmullRom => "catmull-rom",
+            Self::Gamma => "gamma",
+            Self::Beta => "beta",
+            Self::ArcBlend => "arc-blend",
+            Self::CornerBlend => "corner-blend",
+        }
+    }
+
+    /// A one-line description.
+    #[must_use]
+    pub fn summary(self) -> &'static str {
+        match self {
+            Self::Geodesic => "piecewise geodesic (slerp) through the points",
+            Self::Nlerp => "piecewise normalised-linear interpolation through the points",
+            Self::Bezier => "spherical Bézier curve of any degree by de Casteljau",
+            Self::BezierKim => "Kim-Kim-Shin cumulative Bézier quaternion curve",
+            Self::BsplineKim => "Kim-Kim-Shin cumulative cubic B-spline quaternion curve (C²)",
+            Self::Squad => "Shoemake's squad through keys",
+            Self::CatmullRom => "Catmull-Rom spline by slerps",
+            Self::Gamma => "Gamma quaternion spline (Boehm's Gamma spline on S³)",
+            Self::Beta => "spherical Beta spline with bias and tension, interpolating",
+            Self::ArcBlend => "Pobegailo's Cⁿ spline blending circle arcs",
+            Self::CornerBlend => "Pobegailo's corner smoothing of a great-circle polyline",
+        }
+    }
+
+    /// The spaces the method supports.
+    #[must_use]
+    pub fn support(self) -> Support {
+        match self {
+            Self::Geodesic | Self::Nlerp | Self::Bezier | Self::Beta | Self::CatmullRom => {
+                Support::All
+            }
+            Self::BezierKim | Self::BsplineKim | Self::Squad | Self::Gamma => Support::S3,
+            Self::ArcBlend | Self::CornerBlend => Support::S2S3,
+        }
+    }
+
+    /// Whether the method is implemented in this build.
+    #[must_use]
+    pub fn is_implemented(self) -> bool {
+        matches!(self, Self::Geodesic | Self::Nlerp)
+    }
+
+    /// Parses a method id.
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError::Field`] on `method` listing the known ids.
+    pub fn parse(id: &str) -> Result<Self, SceneError> {
+        Self::ALL.into_iter().find(|m| m.id() == id).ok_or_else(|| {
+            let ids: Vec<_> = Self::ALL.iter().map(|m| m.id()).collect();
+            field_error(
+                "method",
+                format!("unknown method \"{id}\"; known: {}", ids.join(", ")),
+            )
+        })
+    }
+
+    fn supports(self, space: Space) -> bool {
+        match self.support() {
+            Support::All => true,
+            Support::S3 => space == Space::S3,
+            Support::S2S3 => matches!(space, Space::S2 | Space::S3),
+        }
+    }
+}
+
+impl Support {
+    /// A human-readable list of the spaces.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::All => "S2, S3, S<m>",
+            Self::S3 => "S3",
+            Self::S2S3 => "S2, S3",
+        }
+    }
+}
+
+/// The scene as written in JSON, before validation.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScene {
+    space: String,
+    #[serde(default)]
+    method: Option<String>,
+    #[serde(default)]
+    points: Option<Vec<Vec<f64>>>,
+    #[serde(default)]
+    knots: Option<Vec<f64>>,
+    #[serde(default)]
+    params: Option<Map<String, Value>>,
+    #[serde(default)]
+    canonicalize: Option<bool>,
+    #[serde(default)]
+    color: Option<String>,
+    #[serde(default)]
+    curves: Option<Vec<RawCurve>>,
+    #[serde(default)]
+    samples: Option<f64>,
+    #[serde(default)]
+    eval_at: Option<Vec<f64>>,
+    #[serde(default)]
+    view: Option<Value>,
+}
+
+/// One curve of a multi-curve scene, as written in JSON.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCurve {
+    method: String,
+    points: Vec<Vec<f64>>,
+    #[serde(default)]
+    knots: Option<Vec<f64>>,
+    #[serde(default)]
+    params: Option<Map<String, Value>>,
+    #[serde(default)]
+    canonicalize: Option<bool>,
+    #[serde(default)]
+    color: Option<String>,
+}
+
+/// Where to evaluate a curve.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Sampling {
+    /// `n ≥ 2` uniform parameters over the domain, both ends included.
+    Uniform(usize),
+    /// These parameters (clamped to the domain by the curve).
+    At(Vec<f64>),
+}
+
+/// One curve of a scene: a method and its input.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveSpec {
+    /// The construction.
+    pub method: Method,
+    /// The input points as given (normalised when the curve is built).
+    pub points: Vec<Vec<f64>>,
+    /// Optional knots.
+    pub knots: Option<Vec<f64>>,
+    /// Method parameters.
+    pub params: Map<String, Value>,
+    /// Whether S³ keys are canonicalised with [`unflip`] before construction.
+    pub canonicalize: bool,
+    /// The colour to draw it in, `[r, g, b]`, when the scene gives one (`"#rrggbb"`).
+    pub color: Option<[u8; 3]>,
+}
+
+/// A validated scene: its fields are checked, the curves are built by [`Scene::build`].
+///
+/// A scene holds one curve (the fields `method`, `points`, `knots`, `params`, `canonicalize`,
+/// `color` at the top level) or several on the same sphere (`"curves": [{ "method", "points",
+/// "knots", "params", "canonicalize", "color" }, …]`), for comparing methods on the same keys.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// The sphere.
+    pub space: Space,
+    /// The curves, at least one.
+    pub curves: Vec<CurveSpec>,
+    /// Where to sample.
+    pub sampling: Sampling,
+    /// Rendering options, passed through to the renderer.
+    pub view: Option<Value>,
+    /// Whether the curves came as a `curves` list (errors and output then name `curves[i]`).
+    listed: bool,
+}
+
+fn samples_count(x: f64) -> Result<usize, SceneError> {
+    if x.fract() != 0.0 || !(2.0..=MAX_SAMPLES as f64).contains(&x) {
+        return Err(field_error(
+            "samples",
+            format!("must be a whole number from 2 to {MAX_SAMPLES}, got {x}"),
+        ));
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "checked to be a whole number ≤ MAX_SAMPLES"
+    )]
+    Ok(x as usize)
+}
+
+fn parse_color(field: &str, c: Option<String>) -> Result<Option<[u8; 3]>, SceneError> {
+    let Some(c) = c else { return Ok(None) };
+    let hex = c
+        .strip_prefix('#')
+        .filter(|h| h.len() == 6 && h.bytes().all(|b| b.is_ascii_hexdigit()));
+    let Some(hex) = hex else {
+        return Err(field_error(
+            field,
+            format!("\"{c}\" is not a colour \"#rrggbb\""),
+        ));
+    };
+    let byte = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).unwrap_or(0);
+    Ok(Some([byte(0), byte(2), byte(4)]))
+}
+
+/// Wraps an error with the curve it belongs to in a `curves` list.
+fn in_curve(index: Option<usize>, e: SceneError) -> SceneError {
+    match index {
+        None => e,
+        Some(index) => SceneError::InCurve {
+            index,
+            error: Box::new(e),
+        },
+    }
+}
+
+impl CurveSpec {
+    fn validate(space: Space, raw: RawCurve) -> Result<Self, SceneError> {
+        let method = Method::parse(&raw.method)?;
+        if !method.supports(space) {
+            return Err(field_error(
+                "method",
+                format!(
+                    "\"{}\" works on {}, not {}",
+                    method.id(),
+                    method.support().describe(),
+                    space.name()
+                ),
+            ));
+        }
+        let n = space.coords();
+        for (i, p) in raw.points.iter().enumerate() {
+            if p.len() != n {
+                return Err(field_error(
+                    format!("points[{i}]"),
+                    format!(
+                        "has {} coordinates, {} points have {n}",
+                        p.len(),
+                        space.name()
+                    ),
+                ));
+            }
+        }
+        if raw.canonicalize.is_some() && space != Space::S3 {
+            return Err(field_error(
+                "canonicalize",
+                "applies to S3 (quaternion) scenes only",
+            ));
+        }
+        Ok(Self {
+            method,
+            points: raw.points,
+            knots: raw.knots,
+            params: raw.params.unwrap_or_default(),
+            canonicalize: raw.canonicalize.unwrap_or(true),
+            color: parse_color("color", raw.color)?,
+        })
+    }
+
+    fn build(&self, space: Space) -> Result<BuiltCurve, SceneError> {
+        if !self.method.is_implemented() {
+            return Err(SceneError::NotImplemented(self.method));
+        }
+        let params = Params::new(self.method, &self.params);
+        Ok(match space {
+            Space::S2 => BuiltCurve::S2(build_any(self, points(&self.points)?, params)?),
+            Space::S3 => {
+                let mut keys: Vec<UnitQuat> = points(&self.points)?;
+                if self.canonicalize {
+                    unflip(&mut keys);
+                }
+                BuiltCurve::S3(build_s3(self, keys, params)?)
+            }
+            Space::Sn(_) => BuiltCurve::Sn(build_any(self, points(&self.points)?, params)?),
+        })
+    }
+}
+
+impl Scene {
+    /// Parses and validates a scene (everything but the curve constructions themselves).
+    ///
+    /// # Errors
+    ///
+    /// [`SceneError::Json`] for text that is not a scene, [`SceneError::Field`] for a bad field.
+    pub fn from_json(text: &str) -> Result<Self, SceneError> {
+        let raw: RawScene =
+            serde_json::from_str(text).map_err(|e| SceneError::Json(e.to_string()))?;
+        let space = Space::parse(&raw.space)?;
+        let listed = raw.curves.is_some();
+        let curves = match (raw.curves, raw.method, raw.points) {
+            (Some(curves), None, None) => {
+                if raw.knots.is_some()
+                    || raw.params.is_some()
+                    || raw.canonicalize.is_some()
+                    || raw.color.is_some()
+                {
+                    return Err(field_error(
+                        "curves",
+                        "with \"curves\", give knots, params, canonicalize and color inside each curve",
+                    ));
+                }
+                if curves.is_empty() {
+                    return Err(field_error("curves", "must list at least one curve"));
+                }
+                curves
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, c)| CurveSpec::validate(space, c).map_err(|e| in_curve(Some(i), e)))
+                    .collect::<Result<Vec<_>, _>>()?
+            }
+            (Some(_), _, _) => {
+                return Err(field_error(
+                    "curves",
+                    "give either \"curves\" or a single curve's \"method\" and \"points\", not both",
+                ));
+            }
+            (None, Some(method), Some(points)) => {
+                let raw_curve = RawCurve {
+                    method,
+                    points,
+                    knots: raw.knots,
+                    params: raw.params,
+                    canonicalize: raw.canonicalize,
+                    color: raw.color,
+                };
+                vec![CurveSpec::validate(space, raw_curve)?]
+            }
+            (None, None, _) => return Err(SceneError::Json("missing field `method`".into())),
+            (None, Some(_), None) => {
+                return Err(SceneError::Json("missing field `points`".into()));
+            }
+        };
+        let sampling = match (raw.samples, raw.eval_at) {
+            (Some(_), Some(_)) => {
+                return Err(field_error(
+                    "eval_at",
+                    "give either samples or eval_at, not both",
+                ));
+            }
+            (Some(s), None) => Sampling::Uniform(samples_count(s)?),
+            (None, Some(ts)) => {
+                if ts.is_empty() || ts.len() > MAX_SAMPLES {
+                    return Err(field_error(
+                        "eval_at",
+                        format!("must have 1 to {MAX_SAMPLES} parameters, got {}", ts.len()),
+                    ));
+                }
+                Sampling::At(ts)
+            }
+            (None, None) => Sampling::Uniform(DEFAULT_SAMPLES),
+        };
+        Ok(Self {
+            space,
+            curves,
+            sampling,
+            view: raw.view,
+            listed,
+        })
+    }
+
+    /// Replaces the sampling by `n` uniform samples.
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError::Field`] on `samples` unless `2 ≤ n ≤ MAX_SAMPLES`.
+    pub fn set_samples(&mut self, n: usize) -> Result<(), SceneError> {
+        #[expect(
+            clippy::cast_precision_loss,
+            reason = "only compared against a small limit"
+        )]
+        let count = samples_count(n as f64)?;
+        self.sampling = Sampling::Uniform(count);
+        Ok(())
+    }
+
+    /// Normalises the points and builds every curve.
+    ///
+    /// # Errors
+    ///
+    /// [`SceneError::Spline`] when a construction rejects its input, [`SceneError::Field`] for
+    /// bad `params`, [`SceneError::NotImplemented`] for a method not in this build; in a
+    /// multi-curve scene the message is prefixed with `curves[i]`.
+    pub fn build(&self) -> Result<Vec<BuiltCurve>, SceneError> {
+        self.curves
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                c.build(self.space)
+                    .map_err(|e| in_curve(self.listed.then_some(i), e))
+            })
+            .collect()
+    }
+
+    /// The parameters to sample a curve with the given domain at.
+    #[must_use]
+    pub fn parameters(&self, [t0, t1]: [f64; 2]) -> Vec<f64> {
+        match &self.sampling {
+            Sampling::At(ts) => ts.clone(),
+            Sampling::Uniform(n) => {
+                #[expect(clippy::cast_precision_loss, reason = "n ≤ MAX_SAMPLES")]
+                let last = (n - 1) as f64;
+                (0..*n)
+                    .map(|i| {
+                        #[expect(clippy::cast_precision_loss, reason = "i < MAX_SAMPLES")]
+                        let u = i as f64 / last;
+                        if i + 1 == *n { t1 } else { t0 + (t1 - t0) * u }
+                    })
+                    .collect()
+            }
+        }
+    }
+
+    /// Samples built curves into the JSON object printed by `spherekit sample`: `space`,
+    /// `method`, `domain`, `t`, `points`, with `deriv` also `velocity`, `acceleration` and (S3)
+    /// `angular_velocity`, `angular_acceleration`; `controls`, `auxiliary` and `info` when the
+    /// method has them. A scene of several curves gives `space` and `curves`, a list of such
+    /// objects without `space`.
+    #[must_use]
+    pub fn sample_json(&self, curves: &[BuiltCurve], deriv: bool) -> Value {
+        let one = |spec: &CurveSpec, curve: &BuiltCurve| {
+            let mut out = Map::new();
+            out.insert("method".into(), json!(spec.method.id()));
+            match curve {
+                BuiltCurve::S2(b) => b.sample_into(self, deriv, &mut out),
+                BuiltCurve::S3(b) => b.sample_into(self, deriv, &mut out),
+                BuiltCurve::Sn(b) => b.sample_into(self, deriv, &mut out),
+            }
+            out
+        };
+        let mut out = Map::new();
+        out.insert("space".into(), json!(self.space.name()));
+        if let ([spec], [curve], false) = (self.curves.as_slice(), curves, self.listed) {
+            out.extend(one(spec, curve));
+        } else {
+            let list = self
+                .curves
+                .iter()
+                .zip(curves)
+                .map(|(s, c)| Value::Object(one(s, c)));
+            out.insert("curves".into(), Value::Array(list.collect()));
+        }
+        Value::Object(out)
+    }
+}
+
+/// A curve built from a scene, with the extras a method derives.
+#[derive(Debug)]
+pub struct Built<P: Manifold> {
+    /// The curve.
+    pub curve: Box<dyn Curve<Point = P>>,
+    /// Derived control points (empty when the method has none).
+    pub controls: Vec<P>,
+    /// Auxiliary vertices solved for (empty when the method has none).
+    pub auxiliary: Vec<P>,
+    /// Method-specific facts, such as solver iterations.
+    pub info: Map<String, Value>,
+}
+
+impl<P: ScenePoint> Built<P> {
+    fn new(curve: impl Curve<Point = P> + 'static) -> Self {
+        Self {
+            curve: Box::new(curve),
+            controls: Vec::new(),
+            auxiliary: Vec::new(),
+            info: Map::new(),
+        }
+    }
+
+    fn sample_into(&self, scene: &Scene, deriv: bool, out: &mut Map<String, Value>) {
+        let domain = self.curve.domain();
+        let ts = scene.parameters(domain);
+        let mut points = Vec::with_capacity(ts.len());
+        let mut velocity = Vec::new();
+        let mut acceleration = Vec::new();
+        let mut omega = Vec::new();
+        let mut alpha = Vec::new();
+        for &t in &ts {
+            if deriv {
+                let jet = self.curve.jet(t);
+                if let Some((w, a)) = P::angular(&jet) {
+                    omega.push(json!(w));
+                    alpha.push(json!(a));
+                }
+                velocity.push(json!(P::vector_coords(&jet.velocity)));
+                acceleration.push(json!(P::vector_coords(&jet.acceleration)));
+                points.push(json!(jet.point.coords()));
+            } else {
+                points.push(json!(self.curve.eval(t).coords()));
+            }
+        }
+        out.insert("domain".into(), json!(domain));
+        out.insert("t".into(), json!(ts));
+        out.insert("points".into(), Value::Array(points));
+        if deriv {
+            out.insert("velocity".into(), Value::Array(velocity));
+            out.insert("acceleration".into(), Value::Array(acceleration));
+            if !omega.is_empty() {
+                out.insert("angular_velocity".into(), Value::Array(omega));
+                out.insert("angular_acceleration".into(), Value::Array(alpha));
+            }
+        }
+        let list = |ps: &[P]| Value::Array(ps.iter().map(|p| json!(p.coords())).collect());
+        if !self.controls.is_empty() {
+            out.insert("controls".into(), list(&self.controls));
+        }
+        if !self.auxiliary.is_empty() {
+            out.insert("auxiliary".into(), list(&self.auxiliary));
+        }
+        if !self.info.is_empty() {
+            out.insert("info".into(), Value::Object(self.info.clone()));
+        }
+    }
+}
+
+/// A curve built from a scene, on its space.
+#[derive(Debug)]
+pub enum BuiltCurve {
+    /// A curve on S².
+    S2(Built<S2Point>),
+    /// A curve of orientations.
+    S3(Built<UnitQuat>),
+    /// A curve on S^m.
+    Sn(Built<SnPoint>),
+}
+
+/// The conversions between a sphere's points and the scene's number lists.
+pub trait ScenePoint: Manifold + 'static {
+    /// Builds a point from scene coordinates (normalising).
+    ///
+    /// # Errors
+    ///
+    /// As the point type's `try_new`.
+    fn from_coords(c: &[f64]) -> Result<Self, PointError>;
+    /// The scene coordinates.
+    fn coords(&self) -> Vec<f64>;
+    /// An ambient vector in the scene's coordinate order.
+    fn vector_coords(v: &Self::Vector) -> Vec<f64>;
+    /// Angular velocity and acceleration (space frame) where the space has them.
+    fn angular(_jet: &crate::Jet<Self>) -> Option<([f64; 3], [f64; 3])> {
+        None
+    }
+}
+
+impl ScenePoint for S2Point {
+    fn from_coords(c: &[f64]) -> Result<Self, PointError> {
+        Self::try_new(glam::DVec3::from_slice(c))
+    }
+    fn coords(&self) -> Vec<f64> {
+        self.as_dvec3().to_array().to_vec()
+    }
+    fn vector_coords(v: &glam::DVec3) -> Vec<f64> {
+        v.to_array().to_vec()
+    }
+}
+
+impl ScenePoint for UnitQuat {
+    fn from_coords(c: &[f64]) -> Result<Self, PointError> {
+        Self::from_wxyz([c[0], c[1], c[2], c[3]])
+    }
+    fn coords(&self) -> Vec<f64> {
+        self.to_wxyz().to_vec()
+    }
+    fn vector_coords(v: &glam::DVec4) -> Vec<f64> {
+        vec![v.w, v.x, v.y, v.z]
+    }
+    fn angular(jet: &crate::Jet<Self>) -> Option<([f64; 3], [f64; 3])> {
+        let (w, a) = angular_velocity_acceleration(jet.point, jet.velocity, jet.acceleration);
+        Some((w.to_array(), a.to_array()))
+    }
+}
+
+impl ScenePoint for SnPoint {
+    fn from_coords(c: &[f64]) -> Result<Self, PointError> {
+        Self::try_new(c.to_vec())
+    }
+    fn coords(&self) -> Vec<f64> {
+        SnPoint::coords(self).to_vec()
+    }
+    fn vector_coords(v: &VecN) -> Vec<f64> {
+        v.to_vec()
+    }
+}
+
+fn points<P: ScenePoint>(raw: &[Vec<f64>]) -> Result<Vec<P>, SceneError> {
+    raw.iter()
+        .enumerate()
+        .map(|(index, c)| {
+            P::from_coords(c).map_err(|reason| SplineError::InvalidPoint { index, reason }.into())
+        })
+        .collect()
+}
+
+/// Typed access to a method's `params`; unknown keys are an error.
+struct Params<'a> {
+    method: Method,
+    map: &'a Map<String, Value>,
+    used: Vec<&'static str>,
+}
+
+#[allow(
+    dead_code,
+    reason = "accessors are used by the methods as they are wired in"
+)]
+impl<'a> Params<'a> {
+    fn new(method: Method, map: &'a Map<String, Value>) -> Self {
+        Self {
+            method,
+            map,
+            used: Vec::new(),
+        }
+    }
+
+    fn get(&mut self, name: &'static str) -> Option<&'a Value> {
+        self.used.push(name);
+        self.map.get(name)
+    }
+
+    fn number(&mut self, name: &'static str, default: f64) -> Result<f64, SceneError> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) => v
+                .as_f64()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| field_error(format!("params.{name}"), "must be a finite number")),
+        }
+    }
+
+    /// One number for every entry, or a list of exactly `len` numbers.
+    fn numbers(
+        &mut self,
+        name: &'static str,
+        default: f64,
+        len: usize,
+    ) -> Result<Vec<f64>, SceneError> {
+        match self.get(name) {
+            None => Ok(vec![default; len]),
+            Some(Value::Array(a)) => {
+                if a.len() != len {
+                    return Err(field_error(
+                        format!("params.{name}"),
+                        format!(
+                            "must be one number or a list of {len}, got a list of {}",
+                            a.len()
+                        ),
+                    ));
+                }
+                a.iter()
+                    .enumerate()
+                    .map(|(i, v)| {
+                        v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                            field_error(format!("params.{name}[{i}]"), "must be a finite number")
+                        })
+                    })
+                    .collect()
+            }
+            Some(v) => {
+                let x = v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                    field_error(
+                        format!("params.{name}"),
+                        "must be a finite number or a list",
+                    )
+                })?;
+                Ok(vec![x; len])
+            }
+        }
+    }
+
+    fn integer(&mut self, name: &'static str, default: u64) -> Result<u64, SceneError> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) => v
+                .as_u64()
+                .ok_or_else(|| field_error(format!("params.{name}"), "must be a whole number ≥ 0")),
+        }
+    }
+
+    fn boolean(&mut self, name: &'static str, default: bool) -> Result<bool, SceneError> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) => v
+                .as_bool()
+                .ok_or_else(|| field_error(format!("params.{name}"), "must be true or false")),
+        }
+    }
+
+    /// One of `choices` (the first is the default).
+    fn choice(
+        &mut self,
+        name: &'static str,
+        choices: &[&'static str],
+    ) -> Result<&'static str, SceneError> {
+        match self.get(name) {
+            None => Ok(choices[0]),
+            Some(v) => v
+                .as_str()
+                .and_then(|s| choices.iter().find(|c| **c == s).copied())
+                .ok_or_else(|| {
+                    field_error(
+                        format!("params.{name}"),
+                        format!("must be one of: {}", choices.join(", ")),
+                    )
+                }),
+        }
+    }
+
+    /// Rejects keys no accessor asked for.
+    fn finish(self) -> Result<(), SceneError> {
+        match self.map.keys().find(|k| !self.used.contains(&k.as_str())) {
+            None => Ok(()),
+            Some(k) => Err(field_error(
+                format!("params.{k}"),
+                format!("unknown parameter for method \"{}\"", self.method.id()),
+            )),
+        }
+    }
+}
+
+/// Methods that work on every sphere.
+fn build_any<P: ScenePoint>(
+    spec: &CurveSpec,
+    points: Vec<P>,
+    params: Params<'_>,
+) -> Result<Built<P>, SceneError> {
+    let knots = spec.knots.clone();
+    Ok(match spec.method {
+        Method::Geodesic => {
+            params.finish()?;
+            Built::new(GeodesicSpline::try_new(points, knots)?)
+        }
+        Method::Nlerp => {
+            params.finish()?;
+            Built::new(NlerpSpline::try_new(points, knots)?)
+        }
+        m => return Err(SceneError::NotImplemented(m)),
+    })
+}
+
+/// Methods on S³, falling back to [`build_any`].
+fn build_s3(
+    spec: &CurveSpec,
+    keys: Vec<UnitQuat>,
+    params: Params<'_>,
+) -> Result<Built<UnitQuat>, SceneError> {
+    build_any(spec, keys, params)
+}
