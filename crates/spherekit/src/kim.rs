@@ -349,7 +349,7 @@ impl Curve for KimBezier {
 ///
 /// let q = |a: f64| UnitQuat::from_axis_angle(DVec3::Z, a).unwrap();
 /// let c = KimBSpline::try_new(vec![q(0.0), q(0.4), q(1.0), q(1.2), q(2.0)]).unwrap();
-/// assert_eq!(c.domain(), [0.0, 3.0]);
+/// assert_eq!(c.domain(), [0.0, 2.0]);
 /// // C² at the joint t = 1.
 /// let (l, r) = (c.jet_at(1.0, Side::Left), c.jet_at(1.0, Side::Right));
 /// assert!(l.point.dist(&r.point) < 1e-15);

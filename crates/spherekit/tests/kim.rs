@@ -3,6 +3,8 @@
 
 //! Kim–Kim–Shin cumulative-form Bézier and B-spline quaternion curves.
 
+#![allow(clippy::unwrap_used, reason = "tests: a panic is the failure report")]
+
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     Curve, KimBSpline, KimBezier, Manifold, Side, SplineError, UnitQuat,
