@@ -9,7 +9,7 @@ use glam::{DQuat, DVec3};
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::geodesic::check_chain;
-use crate::kim::{body_log, cubic_bezier_basis, cumulative_jet};
+use crate::kim::{Factor, Rate, body_log, cubic_bezier_basis, cumulative_jet, cumulative_point};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
 use crate::s3::UnitQuat;
@@ -169,6 +169,7 @@ pub struct GammaSpline {
     last_edge: LastEdge,
     controls: Vec<UnitQuat>,
     omegas: Vec<DVec3>,
+    rates: Vec<Rate>,
 }
 
 impl GammaSpline {
@@ -238,6 +239,7 @@ impl GammaSpline {
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
+        let rates = omegas.iter().copied().map(Rate::new).collect();
         Ok(Self {
             points,
             knots,
@@ -245,6 +247,7 @@ impl GammaSpline {
             last_edge,
             controls,
             omegas,
+            rates,
         })
     }
 
@@ -411,25 +414,41 @@ impl Curve for GammaSpline {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
         let (i, s) = self.knots.locate(t, side);
+        let (p, velocity, acceleration) =
+            cumulative_jet(self.controls[3 * i].as_dquat(), &self.factors(i, s));
+        Jet {
+            point: self.point_at(i, s, p),
+            velocity,
+            acceleration,
+        }
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        let p = cumulative_point(self.controls[3 * i].as_dquat(), &self.factors(i, s));
+        self.point_at(i, s, p)
+    }
+}
+
+impl GammaSpline {
+    /// The three factors of segment `i` at local parameter `s`.
+    fn factors(&self, i: usize, s: f64) -> [Factor; 3] {
         let [b1, b2, b3] = cubic_bezier_basis(s, 1.0 / self.knots.width(i));
-        let factors = [
-            (self.omegas[3 * i], b1),
-            (self.omegas[3 * i + 1], b2),
-            (self.omegas[3 * i + 2], b3),
-        ];
-        let base: DQuat = self.controls[3 * i].as_dquat();
-        let (p, velocity, acceleration) = cumulative_jet(base, &factors);
-        let point = if s == 0.0 {
+        [
+            (self.rates[3 * i], b1),
+            (self.rates[3 * i + 1], b2),
+            (self.rates[3 * i + 2], b3),
+        ]
+    }
+
+    /// The exact control vertex at the ends of segment `i`, the product elsewhere.
+    fn point_at(&self, i: usize, s: f64, p: DQuat) -> UnitQuat {
+        if s == 0.0 {
             self.controls[3 * i]
         } else if s == 1.0 {
             self.controls[3 * i + 3]
         } else {
             UnitQuat::new_unchecked(p)
-        };
-        Jet {
-            point,
-            velocity,
-            acceleration,
         }
     }
 }

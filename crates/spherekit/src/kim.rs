@@ -20,11 +20,39 @@ use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
+use crate::math;
 use crate::s3::UnitQuat;
 
-/// One factor `exp(ω β(t))` of a cumulative product: `ω` and `β, β′, β″` at the current
+/// A body-frame logarithm `ω` stored as unit axis and angle, so that `exp(ω β)` costs one
+/// `sin_cos` and no normalisation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Rate {
+    /// `ω/|ω|`, or zero when `ω = 0`.
+    axis: DVec3,
+    /// `|ω|`.
+    angle: f64,
+}
+
+impl Rate {
+    pub(crate) fn new(omega: DVec3) -> Self {
+        let angle = omega.length();
+        if angle > 0.0 {
+            Self {
+                axis: omega / angle,
+                angle,
+            }
+        } else {
+            Self {
+                axis: DVec3::ZERO,
+                angle: 0.0,
+            }
+        }
+    }
+}
+
+/// One factor `exp(ω β(t))` of a cumulative product: `ω` and `[β, β′, β″]` at the current
 /// parameter (derivatives already scaled to the curve parameter).
-pub(crate) type Factor = (DVec3, [f64; 3]);
+pub(crate) type Factor = (Rate, [f64; 3]);
 
 /// The body-frame logarithm `log(a⁻¹ b)` (a pure quaternion as a vector of ℝ³), without sign flips;
 /// `None` when `a` and `b` are antipodal.
@@ -39,10 +67,43 @@ pub(crate) fn body_log(a: UnitQuat, b: UnitQuat) -> Option<DVec3> {
     Some((a.as_dquat().conjugate() * DQuat::from_vec4(e * theta)).xyz())
 }
 
-/// `ω ↦ exp(ω)` as a raw `DQuat` (unit up to rounding).
+/// `exp(ω β) = cos(|ω|β) + sin(|ω|β)·ω̂` as `(cos, sin·ω̂)`.
 #[inline]
-fn exp_raw(v: DVec3) -> DQuat {
-    UnitQuat::exp(v).as_dquat()
+fn exp_factor(rate: Rate, beta: f64) -> (f64, DVec3) {
+    let (s, c) = math::sin_cos(rate.angle * beta);
+    (c, rate.axis * s)
+}
+
+/// `E⁻¹ x E` for the unit quaternion `E = (c, e)`: the rotation of `x` by `(c, −e)`.
+#[inline]
+fn rotate_inverse(c: f64, e: DVec3, x: DVec3) -> DVec3 {
+    let t = 2.0 * x.cross(e); // 2 (−e) × x
+    x + c * t - e.cross(t)
+}
+
+/// The Hamilton product `p · (c, e)`.
+#[inline]
+fn mul_quat(p: DQuat, c: f64, e: DVec3) -> DQuat {
+    let pv = p.xyz();
+    let v = p.w * e + c * pv + pv.cross(e);
+    DQuat::from_xyzw(v.x, v.y, v.z, p.w * c - pv.dot(e))
+}
+
+/// The Hamilton product `p · (0, v)` as an ambient `x, y, z, w` vector.
+#[inline]
+fn mul_pure(p: DQuat, v: DVec3) -> DVec4 {
+    let pv = p.xyz();
+    (p.w * v + pv.cross(v)).extend(-pv.dot(v))
+}
+
+/// The point `base · ∏ⱼ exp(ωⱼ βⱼ)` alone.
+pub(crate) fn cumulative_point(base: DQuat, factors: &[Factor]) -> DQuat {
+    let mut p = base;
+    for &(rate, [b0, _, _]) in factors {
+        let (c, e) = exp_factor(rate, b0);
+        p = mul_quat(p, c, e);
+    }
+    DQuat::from_vec4(renormalize(DVec4::from(p)))
 }
 
 /// The point and exact ambient first and second derivatives of
@@ -63,27 +124,18 @@ pub(crate) fn cumulative_jet(base: DQuat, factors: &[Factor]) -> (DQuat, DVec4, 
     let mut p = base;
     let mut v = DVec3::ZERO;
     let mut a = DVec3::ZERO;
-    for &(omega, [b0, b1, b2]) in factors {
-        let e = exp_raw(omega * b0);
-        let einv = e.conjugate();
-        // E⁻¹ x E: glam's mul_vec3 computes q x q⁻¹, so use q = E⁻¹.
-        let u = einv.mul_vec3(v);
-        let w1 = omega * b1;
-        a = einv.mul_vec3(a) + 2.0 * u.cross(w1) + omega * b2;
+    for &(rate, [b0, b1, b2]) in factors {
+        let (c, e) = exp_factor(rate, b0);
+        let u = rotate_inverse(c, e, v);
+        let w1 = rate.axis * (rate.angle * b1);
+        a = rotate_inverse(c, e, a) + 2.0 * u.cross(w1) + rate.axis * (rate.angle * b2);
         v = u + w1;
-        p *= e;
+        p = mul_quat(p, c, e);
     }
     let p = DQuat::from_vec4(renormalize(DVec4::from(p)));
     let dq = mul_pure(p, v);
     let ddq = mul_pure(p, a) - DVec4::from(p) * v.length_squared();
     (p, dq, ddq)
-}
-
-/// The Hamilton product `p · (0, v)` as an ambient `x, y, z, w` vector.
-#[inline]
-fn mul_pure(p: DQuat, v: DVec3) -> DVec4 {
-    let pv = p.xyz();
-    (p.w * v + pv.cross(v)).extend(-pv.dot(v))
 }
 
 /// The cumulative cubic Bernstein basis `B̃ⱼ,₃` (j = 1, 2, 3) with first and second derivatives
@@ -216,6 +268,7 @@ const STACK_DEGREE: usize = 16;
 pub struct KimBezier {
     controls: Vec<UnitQuat>,
     omegas: Vec<DVec3>,
+    rates: Vec<Rate>,
     knots: Knots,
 }
 
@@ -234,9 +287,11 @@ impl KimBezier {
             });
         }
         let omegas = chain_logs(&controls)?;
+        let rates = omegas.iter().copied().map(Rate::new).collect();
         Ok(Self {
             controls,
             omegas,
+            rates,
             knots: Knots::uniform(2),
         })
     }
@@ -259,35 +314,51 @@ impl KimBezier {
         &self.omegas
     }
 
-    fn jet_with(&self, t: f64, basis: &[[f64; 3]]) -> Jet<UnitQuat> {
-        let n = self.omegas.len();
-        let base = self.controls[0].as_dquat();
-        let mut factors = [(DVec3::ZERO, [0.0; 3]); STACK_DEGREE];
-        let (p, dq, ddq) = if n <= STACK_DEGREE {
-            for (f, (&w, &b)) in factors.iter_mut().zip(self.omegas.iter().zip(basis)) {
-                *f = (w, b);
+    /// Calls `f` with the factors `(ωᵢ, [B̃ᵢ,ₙ, B̃ᵢ,ₙ′, B̃ᵢ,ₙ″](t))`, i = 1..n, without heap
+    /// allocation up to degree [`STACK_DEGREE`].
+    fn with_factors<R>(&self, t: f64, f: impl FnOnce(&[Factor]) -> R) -> R {
+        let n = self.rates.len();
+        if n == 3 {
+            let [b1, b2, b3] = cubic_bezier_basis(t, 1.0);
+            return f(&[
+                (self.rates[0], b1),
+                (self.rates[1], b2),
+                (self.rates[2], b3),
+            ]);
+        }
+        let fill = |basis: &mut [[f64; 3]], scratch: &mut [f64], factors: &mut [Factor]| {
+            cumulative_bernstein(t, basis, scratch);
+            for (fa, (&r, &b)) in factors.iter_mut().zip(self.rates.iter().zip(basis.iter())) {
+                *fa = (r, b);
             }
-            cumulative_jet(base, &factors[..n])
-        } else {
-            let v: Vec<Factor> = self
-                .omegas
-                .iter()
-                .copied()
-                .zip(basis.iter().copied())
-                .collect();
-            cumulative_jet(base, &v)
         };
-        let point = if t == 0.0 {
+        if n <= STACK_DEGREE {
+            let mut basis = [[0.0; 3]; STACK_DEGREE];
+            let mut scratch = [0.0; 3 * (STACK_DEGREE + 1)];
+            let mut factors = [(Rate::new(DVec3::ZERO), [0.0; 3]); STACK_DEGREE];
+            fill(
+                &mut basis[..n],
+                &mut scratch[..3 * (n + 1)],
+                &mut factors[..n],
+            );
+            f(&factors[..n])
+        } else {
+            let mut basis = vec![[0.0; 3]; n];
+            let mut scratch = vec![0.0; 3 * (n + 1)];
+            let mut factors = vec![(Rate::new(DVec3::ZERO), [0.0; 3]); n];
+            fill(&mut basis, &mut scratch, &mut factors);
+            f(&factors)
+        }
+    }
+
+    /// The exact control at the ends, the product elsewhere.
+    fn point_at(&self, t: f64, p: DQuat) -> UnitQuat {
+        if t == 0.0 {
             self.controls[0]
         } else if t == 1.0 {
-            self.controls[n]
+            self.controls[self.controls.len() - 1]
         } else {
             UnitQuat::new_unchecked(p)
-        };
-        Jet {
-            point,
-            velocity: dq,
-            acceleration: ddq,
         }
     }
 }
@@ -305,21 +376,20 @@ impl Curve for KimBezier {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
         let (_, t) = self.knots.locate(t, side);
-        let n = self.omegas.len();
-        if n == 3 {
-            return self.jet_with(t, &cubic_bezier_basis(t, 1.0));
+        let base = self.controls[0].as_dquat();
+        let (p, velocity, acceleration) = self.with_factors(t, |f| cumulative_jet(base, f));
+        Jet {
+            point: self.point_at(t, p),
+            velocity,
+            acceleration,
         }
-        if n <= STACK_DEGREE {
-            let mut basis = [[0.0; 3]; STACK_DEGREE];
-            let mut scratch = [0.0; 3 * (STACK_DEGREE + 1)];
-            cumulative_bernstein(t, &mut basis[..n], &mut scratch[..3 * (n + 1)]);
-            self.jet_with(t, &basis[..n])
-        } else {
-            let mut basis = vec![[0.0; 3]; n];
-            let mut scratch = vec![0.0; 3 * (n + 1)];
-            cumulative_bernstein(t, &mut basis, &mut scratch);
-            self.jet_with(t, &basis)
-        }
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        let (_, t) = self.knots.locate(t, Side::Right);
+        let base = self.controls[0].as_dquat();
+        let p = self.with_factors(t, |f| cumulative_point(base, f));
+        self.point_at(t, p)
     }
 }
 
@@ -362,6 +432,7 @@ impl Curve for KimBezier {
 pub struct KimBSpline {
     controls: Vec<UnitQuat>,
     omegas: Vec<DVec3>,
+    rates: Vec<Rate>,
     knots: Knots,
 }
 
@@ -381,9 +452,11 @@ impl KimBSpline {
         }
         let omegas = chain_logs(&controls)?;
         let knots = Knots::uniform(controls.len() - 2);
+        let rates = omegas.iter().copied().map(Rate::new).collect();
         Ok(Self {
             controls,
             omegas,
+            rates,
             knots,
         })
     }
@@ -416,9 +489,9 @@ impl Curve for KimBSpline {
         let (i, s) = self.knots.locate(t, side);
         let [b1, b2, b3] = cubic_bspline_basis(s);
         let factors = [
-            (self.omegas[i], b1),
-            (self.omegas[i + 1], b2),
-            (self.omegas[i + 2], b3),
+            (self.rates[i], b1),
+            (self.rates[i + 1], b2),
+            (self.rates[i + 2], b3),
         ];
         let (p, dq, ddq) = cumulative_jet(self.controls[i].as_dquat(), &factors);
         Jet {
@@ -426,6 +499,17 @@ impl Curve for KimBSpline {
             velocity: dq,
             acceleration: ddq,
         }
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        let [b1, b2, b3] = cubic_bspline_basis(s);
+        let factors = [
+            (self.rates[i], b1),
+            (self.rates[i + 1], b2),
+            (self.rates[i + 2], b3),
+        ];
+        UnitQuat::new_unchecked(cumulative_point(self.controls[i].as_dquat(), &factors))
     }
 }
 
