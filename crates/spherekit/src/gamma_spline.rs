@@ -70,6 +70,7 @@ impl LastEdge {
 /// The second-order behaviour of a [`GammaSpline`] at one interior knot, from
 /// [`GammaSpline::joint_report`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct GammaJoint {
     /// The knot index `j` (1..l − 1) of the joint `uⱼ`.
     pub index: usize,

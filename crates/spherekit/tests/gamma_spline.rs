@@ -563,3 +563,30 @@ fn bad_input_is_a_typed_error() {
         assert_eq!(LastEdge::from_name(e.name()), Ok(e));
     }
 }
+
+#[test]
+fn c1_with_extreme_gamma_and_spacing() {
+    let mut rng = Rng(0xabc);
+    let d = rng.chain(8, 2.5);
+    let knots = vec![0.0, 1e-3, 1.0, 1e3, 1e3 + 1e-2, 2e3];
+    for g in [
+        vec![1e-3, 1e3, 1.0, 2.0],
+        vec![1e3, 1e-3, 1e-3, 1e3],
+        vec![1e-6, 1e6, 1e-6, 1e6],
+    ] {
+        let s = gamma(d.clone(), Some(knots.clone()), Gammas::Each(g.clone()));
+        for j in s.joint_report() {
+            let v = s.jet(j.knot).velocity.length().max(1.0);
+            assert!(j.first_derivative_jump < 1e-9 * v, "{g:?}: {j:?}");
+            assert!(j.second_derivative_jump.is_finite(), "{g:?}: {j:?}");
+        }
+        for k in 0..=100 {
+            let j = s.jet(2e3 * f64::from(k) / 100.0);
+            assert!((v4(j.point).length() - 1.0).abs() < 1e-15, "{g:?}");
+            assert!(
+                j.velocity.is_finite() && j.acceleration.is_finite(),
+                "{g:?}"
+            );
+        }
+    }
+}
