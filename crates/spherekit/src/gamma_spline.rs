@@ -36,7 +36,8 @@ pub enum LastEdge {
     /// The paper's formula: `b₃ₗ₋₂` on the arc `dₗ dₗ₊₁` (`"formula"`, the default).
     #[default]
     Formula,
-    /// The paper's Example 2 table: `b₃ₗ₋₂` on the arc `dₗ₊₁ dₗ₊₂` (`"paper-example"`).
+    /// The paper's Example 2 table: `b₃ₗ₋₂` on the arc `dₗ₊₁ dₗ₊₂` at the same fraction
+    /// (`"paper-example"`); `b₃ₗ₋₃` follows from it. No effect for `l = 1`, where `b₁ = d₁`.
     PaperExample,
 }
 
@@ -146,7 +147,7 @@ pub struct GammaJoint {
 /// # Examples
 ///
 /// ```
-/// use spherekit::{glam::DVec3, Curve, GammaSpline, Gammas, LastEdge, Manifold, Side, UnitQuat};
+/// use spherekit::{glam::DVec3, Curve, GammaSpline, Gammas, LastEdge, Manifold, UnitQuat};
 ///
 /// let d: Vec<UnitQuat> = [0.0_f64, 0.5, 1.5, 1.8, 2.6, 3.0]
 ///     .iter()
