@@ -74,7 +74,9 @@ mod corner_blend;
 mod curve;
 mod error;
 mod flow;
+mod gamma_spline;
 mod geodesic;
+mod kim;
 mod knots;
 mod manifold;
 #[allow(
@@ -96,7 +98,9 @@ pub use circle::CircleArc;
 pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SplineError};
+pub use gamma_spline::{GammaJoint, GammaSpline, Gammas, LastEdge};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
+pub use kim::{KimBSpline, KimBezier};
 pub use knots::Knots;
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use rotation::{
