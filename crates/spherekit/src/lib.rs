@@ -68,6 +68,7 @@
 pub use glam;
 
 mod ambient;
+mod bezier;
 mod curve;
 mod error;
 mod geodesic;
@@ -76,9 +77,11 @@ mod manifold;
 mod math;
 mod s2;
 mod s3;
+mod slerp_jet;
 mod sn;
 
 pub use ambient::{Ambient, VecN};
+pub use bezier::{Bezier, cubic_jet, de_casteljau, de_casteljau_jet};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
@@ -86,4 +89,5 @@ pub use knots::Knots;
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
+pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use sn::SnPoint;
