@@ -8,7 +8,7 @@ use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::SplineError;
 use crate::geodesic::check_chain;
 use crate::manifold::Manifold;
-use crate::slerp_jet::{ScalarJet, VJet, slerp_jet_vec};
+use crate::slerp_jet::{FixedArc, ScalarJet, VJet, slerp_jet_vec};
 
 /// A spherical Bézier curve of degree `n ≥ 1` on any sphere, by de Casteljau's algorithm with
 /// geodesic interpolation (Shoemake; spec §5.1, seeds 003 eqs. (2)–(3) and 004 "de Casteljau").
@@ -180,4 +180,83 @@ pub fn cubic_jet<P: Manifold>(ctrl: [&P; 4], s: ScalarJet) -> Jet<P> {
     }
     debug_assert!(top.v.is_finite(), "non-finite cubic jet");
     top.into_jet()
+}
+
+/// One cubic spherical Bézier segment `Q[p₀, p₁, p₂, p₃]` with the three fixed arcs of its
+/// first de Casteljau level precomputed: the building block of piecewise-cubic constructions
+/// ([`CatmullRom`](crate::CatmullRom), Beta splines). Same curve as [`Bezier`] of degree 3.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{Bezier, Curve, CubicSegment, Manifold, S2Point, ScalarJet};
+///
+/// let p = [S2Point::X, S2Point::Y, S2Point::Z, S2Point::X];
+/// let seg = CubicSegment::try_new(p).unwrap();
+/// let whole = Bezier::try_new(p.to_vec()).unwrap();
+/// assert!(seg.eval(0.3).dist(&whole.eval(0.3)) < 1e-15);
+/// // Derivatives with respect to a global parameter t = 2 + 0.5·s (segment width 0.5):
+/// let j = seg.jet(ScalarJet::param(0.3, 2.0));
+/// assert!((j.velocity - whole.jet(0.3).velocity * 2.0).length() < 1e-14);
+/// ```
+#[derive(Clone, Debug)]
+pub struct CubicSegment<P: Manifold> {
+    ctrl: [P; 4],
+    arcs: [FixedArc<P::Vector>; 3],
+}
+
+impl<P: Manifold> CubicSegment<P> {
+    /// Precomputes the segment.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::Antipodal`] with the index (0, 1 or 2) of the first of two antipodal
+    /// consecutive control points.
+    pub fn try_new(ctrl: [P; 4]) -> Result<Self, SplineError> {
+        let arc = |i: usize| {
+            FixedArc::try_new(ctrl[i].to_vector(), ctrl[i + 1].to_vector())
+                .ok_or(SplineError::Antipodal { index: i })
+        };
+        let arcs = [arc(0)?, arc(1)?, arc(2)?];
+        Ok(Self { ctrl, arcs })
+    }
+
+    /// The control points.
+    #[must_use]
+    pub fn controls(&self) -> &[P; 4] {
+        &self.ctrl
+    }
+
+    /// The point at `s ∈ [0, 1]` (6 slerps, 3 of them with precomputed frames).
+    #[must_use]
+    pub fn eval(&self, s: f64) -> P {
+        if s == 0.0 {
+            return self.ctrl[0].clone();
+        }
+        if s == 1.0 {
+            return self.ctrl[3].clone();
+        }
+        let [f, g, h] = [0, 1, 2].map(|i| P::from_vector_unchecked(self.arcs[i].point(s)));
+        let m = f.try_slerp(&g, s).unwrap_or(f);
+        let n = g.try_slerp(&h, s).unwrap_or(g);
+        m.try_slerp(&n, s).unwrap_or(m)
+    }
+
+    /// The point and exact derivatives at the parameter jet `s` (see [`de_casteljau_jet`]).
+    #[must_use]
+    pub fn jet(&self, s: ScalarJet) -> Jet<P> {
+        let [f, g, h] = [0, 1, 2].map(|i| self.arcs[i].jet(s));
+        let sl = |a: &VJet<P::Vector>, b: &VJet<P::Vector>| {
+            slerp_jet_vec(a, b, s).unwrap_or_else(|| a.clone())
+        };
+        let m = sl(&f, &g);
+        let n = sl(&g, &h);
+        let mut top = sl(&m, &n);
+        if s.value == 0.0 {
+            top.v = self.ctrl[0].to_vector();
+        } else if s.value == 1.0 {
+            top.v = self.ctrl[3].to_vector();
+        }
+        top.into_jet()
+    }
 }

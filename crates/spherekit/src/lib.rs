@@ -69,6 +69,8 @@ pub use glam;
 
 mod ambient;
 mod bezier;
+mod catmull_rom;
+mod continuity;
 mod curve;
 mod error;
 mod geodesic;
@@ -79,9 +81,12 @@ mod s2;
 mod s3;
 mod slerp_jet;
 mod sn;
+mod squad;
 
 pub use ambient::{Ambient, VecN};
-pub use bezier::{Bezier, cubic_jet, de_casteljau, de_casteljau_jet};
+pub use bezier::{Bezier, CubicSegment, cubic_jet, de_casteljau, de_casteljau_jet};
+pub use catmull_rom::CatmullRom;
+pub use continuity::{JointContinuity, continuity};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
@@ -91,3 +96,4 @@ pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
 pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use sn::SnPoint;
+pub use squad::Squad;

@@ -29,7 +29,7 @@
 
 use crate::ambient::Ambient;
 use crate::curve::Jet;
-use crate::manifold::{ANTIPODAL_TOLERANCE, Manifold, renormalize};
+use crate::manifold::{ANTIPODAL_TOLERANCE, Manifold, geodesic_frame, renormalize};
 use crate::math;
 
 /// A scalar function of the curve parameter with its first and second derivatives.
@@ -204,6 +204,58 @@ impl<V: Ambient> VJet<V> {
             point: P::from_vector_unchecked(self.v),
             velocity: self.d,
             acceleration: self.dd,
+        }
+    }
+}
+
+/// A fixed great-circle arc `G[p, q](s) = cos(sθ)·p + sin(sθ)·e` with its frame precomputed,
+/// for the first level of a pyramid whose control points do not move.
+#[derive(Clone, Debug)]
+pub(crate) struct FixedArc<V> {
+    start: V,
+    end: V,
+    /// Unit tangent at `start` towards `end` (zero for a zero-length arc).
+    dir: V,
+    theta: f64,
+}
+
+impl<V: Ambient> FixedArc<V> {
+    /// `None` for antipodal endpoints.
+    pub(crate) fn try_new(p: V, q: V) -> Option<Self> {
+        let (theta, dir) = geodesic_frame(&p, &q)?;
+        Some(Self {
+            start: p,
+            end: q,
+            dir,
+            theta,
+        })
+    }
+
+    /// The point at fraction `s`; exact at 0 and 1.
+    #[inline]
+    pub(crate) fn point(&self, s: f64) -> V {
+        if s == 0.0 {
+            return self.start.clone();
+        }
+        if s == 1.0 {
+            return self.end.clone();
+        }
+        let (sn, cs) = math::sin_cos(s * self.theta);
+        renormalize(self.start.clone() * cs + self.dir.clone() * sn)
+    }
+
+    /// The jet at the fraction jet `s`:
+    /// `G′ = θs′·T`, `G″ = θs″·T − (θs′)²·G` with `T = −sin(sθ)·p + cos(sθ)·e`.
+    #[inline]
+    pub(crate) fn jet(&self, s: ScalarJet) -> VJet<V> {
+        let (sn, cs) = math::sin_cos(s.value * self.theta);
+        let v = self.point(s.value);
+        let tangent = self.dir.clone() * cs - self.start.clone() * sn;
+        let w = self.theta * s.first;
+        VJet {
+            d: tangent.clone() * w,
+            dd: tangent * (self.theta * s.second) - v.clone() * (w * w),
+            v,
         }
     }
 }
