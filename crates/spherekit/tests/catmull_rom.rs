@@ -4,6 +4,8 @@
 //! Catmull-Rom splines (spec §7): the intrinsic rule on any sphere and the textbook quaternion
 //! rule on S³, uniform and non-uniform knots.
 
+#![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
+
 mod classic_support;
 
 use classic_support::*;

@@ -3,6 +3,8 @@
 
 //! The continuity report.
 
+#![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
+
 use spherekit::glam::DVec3;
 use spherekit::{Bezier, CatmullRom, GeodesicSpline, S2Point, Squad, UnitQuat, continuity};
 

@@ -3,11 +3,13 @@
 
 //! Squad (spec §6), uniform and non-uniform knots.
 
+#![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
+
 mod classic_support;
 
 use classic_support::*;
 use spherekit::glam::{DQuat, DVec3, DVec4};
-use spherekit::{Ambient, Curve, Manifold, Side, SplineError, Squad, UnitQuat, continuity, unflip};
+use spherekit::{Curve, Manifold, Side, SplineError, Squad, UnitQuat, continuity, unflip};
 
 /// `q·v` for a pure quaternion `v`, as an ambient vector.
 fn qv(q: UnitQuat, v: DVec3) -> DVec4 {
