@@ -7,8 +7,8 @@ use crate::ambient::Ambient;
 use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::SplineError;
 use crate::geodesic::check_chain;
-use crate::manifold::Manifold;
-use crate::slerp_jet::{FixedArc, ScalarJet, VJet, slerp_jet_vec};
+use crate::manifold::{Manifold, renormalize};
+use crate::slerp_jet::{FixedArc, ScalarJet, VJet, slerp_jet_vec, slerp_point};
 
 /// A spherical Bézier curve of degree `n ≥ 1` on any sphere, by de Casteljau's algorithm with
 /// geodesic interpolation (Shoemake; spec §5.1, seeds 003 eqs. (2)–(3) and 004 "de Casteljau").
@@ -236,10 +236,13 @@ impl<P: Manifold> CubicSegment<P> {
         if s == 1.0 {
             return self.ctrl[3].clone();
         }
-        let [f, g, h] = [0, 1, 2].map(|i| P::from_vector_unchecked(self.arcs[i].point(s)));
-        let m = f.try_slerp(&g, s).unwrap_or(f);
-        let n = g.try_slerp(&h, s).unwrap_or(g);
-        m.try_slerp(&n, s).unwrap_or(m)
+        let [f, g, h] = [0, 1, 2].map(|i| self.arcs[i].point_unnormalized(s));
+        let sl = |a: &P::Vector, b: &P::Vector| {
+            slerp_point(a.clone(), b.clone(), s).unwrap_or_else(|| renormalize(a.clone()))
+        };
+        let m = sl(&f, &g);
+        let n = sl(&g, &h);
+        P::from_vector_unchecked(sl(&m, &n))
     }
 
     /// The point and exact derivatives at the parameter jet `s` (see [`de_casteljau_jet`]).

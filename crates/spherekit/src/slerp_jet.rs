@@ -240,8 +240,15 @@ impl<V: Ambient> FixedArc<V> {
         if s == 1.0 {
             return self.end.clone();
         }
+        renormalize(self.point_unnormalized(s))
+    }
+
+    /// `cos(sθ)·p + sin(sθ)·e` without the final rescaling (unit up to a few ulps): for
+    /// intermediate points of a pyramid, which [`slerp_point`] renormalises anyway.
+    #[inline]
+    pub(crate) fn point_unnormalized(&self, s: f64) -> V {
         let (sn, cs) = math::sin_cos(s * self.theta);
-        renormalize(self.start.clone() * cs + self.dir.clone() * sn)
+        self.start.clone() * cs + self.dir.clone() * sn
     }
 
     /// The jet at the fraction jet `s`:
@@ -258,6 +265,32 @@ impl<V: Ambient> FixedArc<V> {
             v,
         }
     }
+}
+
+/// The point `G[a, b](u)` for vectors that are unit up to a few ulps; `None` when antipodal.
+///
+/// The fast path of the pyramids' point evaluation: as [`Manifold::try_slerp`] but without
+/// forming the unit direction separately (`|b − cos θ·a| = sin θ = |a − b|·|a + b|/2`).
+#[inline]
+pub(crate) fn slerp_point<V: Ambient>(a: V, b: V, u: f64) -> Option<V> {
+    let diff = b.clone() - a.clone();
+    let sum = b + a.clone();
+    let (d, s) = (diff.length(), sum.length());
+    // b − cos θ·a without cancellation: from the difference near 0, from the sum near π.
+    let w = if d <= s {
+        if d == 0.0 {
+            return Some(a);
+        }
+        diff + a.clone() * (0.5 * d * d)
+    } else {
+        if s <= ANTIPODAL_TOLERANCE {
+            return None;
+        }
+        sum - a.clone() * (0.5 * s * s)
+    };
+    let theta = 2.0 * math::atan2(d, s);
+    let (sn, cs) = math::sin_cos(u * theta);
+    Some(renormalize(a * cs + w * (sn / (0.5 * d * s))))
 }
 
 /// Ambient-vector form of [`slerp_jet`]; `None` if `a(t)` and `b(t)` are antipodal.

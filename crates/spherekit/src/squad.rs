@@ -9,9 +9,9 @@ use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::geodesic::check_chain;
 use crate::knots::Knots;
-use crate::manifold::Manifold;
+use crate::manifold::{Manifold, renormalize};
 use crate::s3::UnitQuat;
-use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec};
+use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec, slerp_point};
 
 /// Squad through keys `q₀ … qₙ` (n ≥ 1) of S³ at knots `t₀ < … < tₙ` (default `0, 1, …, n`);
 /// spec §6, seed 004 "Squad".
@@ -181,8 +181,9 @@ impl Curve for Squad {
             return self.keys[i + 1];
         }
         let seg = &self.segments[i];
-        let a = UnitQuat::from_vector_unchecked(seg.keys.point(tau));
-        let b = UnitQuat::from_vector_unchecked(seg.inner.point(tau));
-        a.try_slerp(&b, 2.0 * tau * (1.0 - tau)).unwrap_or(a)
+        let a = seg.keys.point_unnormalized(tau);
+        let b = seg.inner.point_unnormalized(tau);
+        let p = slerp_point(a, b, 2.0 * tau * (1.0 - tau)).unwrap_or_else(|| renormalize(a));
+        UnitQuat::from_vector_unchecked(p)
     }
 }
