@@ -474,7 +474,17 @@ mod tests {
     #[test]
     fn fixed_endpoints_at_all_angles() {
         for theta in [
-            0.0_f64, 1e-12, 1e-9, 1e-5, 0.3, 0.999_999, 1.0, 1.000_001, 2.0, 3.0, 3.141_59,
+            0.0_f64,
+            1e-12,
+            1e-9,
+            1e-5,
+            0.3,
+            0.999_999,
+            1.0,
+            1.000_001,
+            2.0,
+            3.0,
+            core::f64::consts::PI - 2.65e-6,
         ] {
             let a = DVec3::X;
             let b = DVec3::new(theta.cos(), theta.sin(), 0.0);
