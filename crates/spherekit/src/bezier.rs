@@ -142,9 +142,15 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
 #[must_use]
 pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
     assert!(!ctrl.is_empty(), "de Casteljau needs a control point");
-    let mut level: Vec<VJet<P::Vector>> =
-        ctrl.iter().map(|p| VJet::constant(p.to_vector())).collect();
-    for n in (1..ctrl.len()).rev() {
+    // The first level has fixed endpoints: plain arcs.
+    let mut level: Vec<VJet<P::Vector>> = if ctrl.len() == 1 {
+        vec![VJet::constant(ctrl[0].to_vector())]
+    } else {
+        ctrl.windows(2)
+            .map(|w| first_level(&w[0], &w[1], s))
+            .collect()
+    };
+    for n in (1..ctrl.len().saturating_sub(1)).rev() {
         for i in 0..n {
             let next =
                 slerp_jet_vec(&level[i], &level[i + 1], s).unwrap_or_else(|| level[i].clone());
@@ -160,23 +166,30 @@ pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
     top.into_jet()
 }
 
+/// The jet of `G[p, q](s)` for fixed `p`, `q` (an arc; antipodal points fall back to `p`).
+fn first_level<P: Manifold>(p: &P, q: &P, s: ScalarJet) -> VJet<P::Vector> {
+    match FixedArc::try_new(p.to_vector(), q.to_vector()) {
+        Some(arc) => arc.jet(s),
+        None => VJet::constant(p.to_vector()),
+    }
+}
+
 /// [`de_casteljau_jet`] for a cubic, without heap allocation: the jet of `Q[p₀, p₁, p₂, p₃](s)`.
 #[must_use]
 pub fn cubic_jet<P: Manifold>(ctrl: [&P; 4], s: ScalarJet) -> Jet<P> {
-    let c = ctrl.map(|p| VJet::constant(p.to_vector()));
     let sl = |a: &VJet<P::Vector>, b: &VJet<P::Vector>| {
         slerp_jet_vec(a, b, s).unwrap_or_else(|| a.clone())
     };
-    let f = sl(&c[0], &c[1]);
-    let g = sl(&c[1], &c[2]);
-    let h = sl(&c[2], &c[3]);
+    let f = first_level(ctrl[0], ctrl[1], s);
+    let g = first_level(ctrl[1], ctrl[2], s);
+    let h = first_level(ctrl[2], ctrl[3], s);
     let m = sl(&f, &g);
     let n = sl(&g, &h);
     let mut top = sl(&m, &n);
     if s.value == 0.0 {
-        top.v = c[0].v.clone();
+        top.v = ctrl[0].to_vector();
     } else if s.value == 1.0 {
-        top.v = c[3].v.clone();
+        top.v = ctrl[3].to_vector();
     }
     debug_assert!(top.v.is_finite(), "non-finite cubic jet");
     top.into_jet()

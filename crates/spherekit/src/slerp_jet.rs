@@ -26,6 +26,11 @@
 //! divided by a small angle: coincident and nearly coincident endpoints give exact, finite
 //! jets. The angle θ comes from `2·atan2(|a − b|, |a + b|)` and `sin θ = |a − b|·|a + b|/2`,
 //! accurate near 0 and near π.
+//!
+//! Near π the coefficients grow like `1/sin θ` and `a`, `b` are nearly parallel, so the result
+//! carries the problem's own conditioning (errors of order `ε/(π − θ)`); the normal components
+//! of `G′` and `G″` are then restored exactly (`G·G′ = 0`, `G·G″ = −|G′|²`). Exactly antipodal
+//! endpoints (within [`ANTIPODAL_TOLERANCE`]) have no geodesic and give `None`.
 
 use crate::ambient::Ambient;
 use crate::curve::Jet;

@@ -146,6 +146,10 @@ fn keys_on_one_great_circle_give_the_scalar_squad() {
         if knots[1] == 1.0 {
             let s2 = alpha[2] - (alpha[1] - 2.0 * alpha[2] + alpha[3]) / 4.0;
             assert!(c.controls()[2].dist(&on(s2)) < 1e-15, "inner point");
+            // The tutorial's Euclidean squad weights at t = 0.4: 0.312, 0.288, 0.192, 0.208.
+            let s1 = alpha[1] - (alpha[0] - 2.0 * alpha[1] + alpha[2]) / 4.0;
+            let a = 0.312 * alpha[1] + 0.288 * s1 + 0.192 * s2 + 0.208 * alpha[2];
+            assert!(c.eval(1.4).dist(&on(a)) < 1e-14, "weights at 0.4");
         }
         for k in 0..=100 {
             let t = knots[5] * k as f64 / 100.0;
