@@ -36,7 +36,8 @@ use crate::slerp_jet::ScalarJet;
 ///   uniform knots this is `dᵢ = Xᵢ^(1/6)·cᵢ`, `eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁`, exactly the seed.
 ///
 /// Both rules agree with each other (and with the scalar Catmull-Rom spline of the angles) when
-/// all points lie on one great circle with neighbouring keys less than π/2 apart. Since
+/// all points lie on one great circle at angles αₖ with |αₖ₊₁ − αₖ₋₁| < π/2 (so that the
+/// short-path rule does not act) and |αₖ₊₁ − αₖ| < π. Since
 /// `c′(tᵢ±) = 3·log_{cᵢ}(dᵢ)/hᵢ = −3·log_{cᵢ}(eᵢ₋₁)/hᵢ₋₁ = Tᵢ`, the spline is **C¹ in t for any
 /// knots** (the factor `hᵢ/3` scales the tangent per segment); it is not C² in general. For
 /// uniform knots `Tᵢ` is half the difference over two steps, as in the Euclidean
