@@ -130,7 +130,11 @@ pub fn render_built(
     if matches!(scene.space, Space::Sn(m) if m != 1) {
         return Err(RenderError::Space(scene.space.name()));
     }
-    let view = View::from_json(scene.view.as_ref(), scene.space == Space::S3, facing(curves))?;
+    let view = View::from_json(
+        scene.view.as_ref(),
+        scene.space == Space::S3,
+        facing(curves),
+    )?;
     let strip = if view.plot == Plot::Speed {
         size / 4
     } else {

@@ -69,7 +69,10 @@ pub use glam;
 
 mod ambient;
 mod arc_blend;
+mod bezier;
+mod catmull_rom;
 mod circle;
+mod continuity;
 mod corner_blend;
 mod curve;
 mod error;
@@ -89,12 +92,17 @@ mod s2;
 mod s3;
 #[cfg(feature = "scene")]
 pub mod scene;
+mod slerp_jet;
 mod smoothing;
 mod sn;
+mod squad;
 
 pub use ambient::{Ambient, VecN};
 pub use arc_blend::{ArcBlend, MAX_BLEND_ORDER};
+pub use bezier::{Bezier, CubicSegment, cubic_jet, de_casteljau, de_casteljau_jet};
+pub use catmull_rom::CatmullRom;
 pub use circle::CircleArc;
+pub use continuity::{JointContinuity, continuity};
 pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SplineError};
@@ -108,8 +116,10 @@ pub use rotation::{
 };
 pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
+pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
 pub use sn::SnPoint;
+pub use squad::Squad;
 
 /// The README's Rust example, compiled and run as a doctest.
 #[cfg(doctest)]
