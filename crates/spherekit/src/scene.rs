@@ -40,9 +40,10 @@ use serde::Deserialize;
 use serde_json::{Map, Value, json};
 
 use crate::{
-    Ambient, ArcBlend, CornerBlend, CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GeodesicSpline,
-    MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, SnPoint, SplineError, UnitQuat,
-    VecN, angular_velocity_acceleration, unflip,
+    Ambient, ArcBlend, Bezier, CatmullRom, CornerBlend, CornerBlendS3, Curve,
+    DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline, KimBezier, LastEdge,
+    MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, SnPoint, SplineError, Squad,
+    UnitQuat, VecN, angular_velocity_acceleration, unflip,
 };
 
 /// The most samples (or `eval_at` parameters) a scene may ask for.
@@ -278,10 +279,7 @@ impl Method {
     /// Whether the method is implemented in this build.
     #[must_use]
     pub fn is_implemented(self) -> bool {
-        matches!(
-            self,
-            Self::Geodesic | Self::Nlerp | Self::ArcBlend | Self::CornerBlend
-        )
+        !matches!(self, Self::Beta)
     }
 
     /// Parses a method id.
@@ -651,13 +649,27 @@ impl Scene {
     /// objects without `space`.
     #[must_use]
     pub fn sample_json(&self, curves: &[BuiltCurve], deriv: bool) -> Value {
+        self.sample_json_with(
+            curves,
+            SampleOptions {
+                deriv,
+                continuity: false,
+            },
+        )
+    }
+
+    /// [`sample_json`](Self::sample_json) with every option; `continuity` adds
+    /// `continuity: [{ "t", "c0", "c1", "c2" }, …]`, the jumps of the point and of the first and
+    /// second derivatives at each interior joint (see [`continuity`](crate::continuity)).
+    #[must_use]
+    pub fn sample_json_with(&self, curves: &[BuiltCurve], options: SampleOptions) -> Value {
         let one = |spec: &CurveSpec, curve: &BuiltCurve| {
             let mut out = Map::new();
             out.insert("method".into(), json!(spec.method.id()));
             match curve {
-                BuiltCurve::S2(b) => b.sample_into(self, deriv, &mut out),
-                BuiltCurve::S3(b) => b.sample_into(self, deriv, &mut out),
-                BuiltCurve::Sn(b) => b.sample_into(self, deriv, &mut out),
+                BuiltCurve::S2(b) => b.sample_into(self, options, &mut out),
+                BuiltCurve::S3(b) => b.sample_into(self, options, &mut out),
+                BuiltCurve::Sn(b) => b.sample_into(self, options, &mut out),
             }
             out
         };
@@ -677,6 +689,15 @@ impl Scene {
     }
 }
 
+/// What [`Scene::sample_json_with`] reports besides the points.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SampleOptions {
+    /// Velocity and acceleration (and angular ones on S3).
+    pub deriv: bool,
+    /// Jumps at the joints.
+    pub continuity: bool,
+}
+
 /// A curve built from a scene, with the extras a method derives.
 #[derive(Debug)]
 pub struct Built<P: Manifold> {
@@ -693,6 +714,11 @@ pub struct Built<P: Manifold> {
 }
 
 impl<P: ScenePoint> Built<P> {
+    fn with_controls(mut self, controls: Vec<P>) -> Self {
+        self.controls = controls;
+        self
+    }
+
     fn with_info(mut self, key: &str, value: Value) -> Self {
         self.info.insert(key.into(), value);
         self
@@ -708,7 +734,8 @@ impl<P: ScenePoint> Built<P> {
         }
     }
 
-    fn sample_into(&self, scene: &Scene, deriv: bool, out: &mut Map<String, Value>) {
+    fn sample_into(&self, scene: &Scene, options: SampleOptions, out: &mut Map<String, Value>) {
+        let deriv = options.deriv;
         let domain = self.curve.domain();
         let ts = scene.parameters(domain);
         let mut points = Vec::with_capacity(ts.len());
@@ -750,6 +777,13 @@ impl<P: ScenePoint> Built<P> {
         }
         if !self.info.is_empty() {
             out.insert("info".into(), Value::Object(self.info.clone()));
+        }
+        if options.continuity {
+            let joints: Vec<Value> = crate::continuity(&*self.curve)
+                .iter()
+                .map(|j| json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2 }))
+                .collect();
+            out.insert("continuity".into(), Value::Array(joints));
         }
     }
 }
@@ -987,6 +1021,17 @@ fn build_any<P: ScenePoint>(
             params.finish()?;
             Built::new(NlerpSpline::try_new(points.clone(), knots)?, points)
         }
+        Method::Bezier => {
+            params.finish()?;
+            no_knots(spec)?;
+            Built::new(Bezier::try_new(points.clone())?, points)
+        }
+        Method::CatmullRom => {
+            params.finish()?;
+            let curve = CatmullRom::try_new(points.clone(), knots)?;
+            let controls = curve.controls().to_vec();
+            Built::new(curve, points).with_controls(controls)
+        }
         Method::ArcBlend => {
             let order = params.order()?;
             params.finish()?;
@@ -1014,7 +1059,63 @@ fn build_s3(
     keys: Vec<UnitQuat>,
     mut params: Params<'_>,
 ) -> Result<Built<UnitQuat>, SceneError> {
+    let knots = spec.knots.clone();
     Ok(match spec.method {
+        Method::BezierKim => {
+            params.finish()?;
+            no_knots(spec)?;
+            Built::new(KimBezier::try_new(keys.clone())?, keys)
+        }
+        Method::BsplineKim => {
+            params.finish()?;
+            no_knots(spec)?;
+            Built::new(KimBSpline::try_new(keys.clone())?, keys)
+        }
+        Method::Squad => {
+            params.finish()?;
+            let curve = Squad::try_new(keys.clone(), knots)?;
+            let controls = curve.controls().to_vec();
+            Built::new(curve, keys).with_controls(controls)
+        }
+        Method::CatmullRom => {
+            let tangent = params.choice("tangent", &["quaternion", "intrinsic"])?;
+            params.finish()?;
+            let curve = if tangent == "quaternion" {
+                CatmullRom::try_new_quaternion(keys.clone(), knots)?
+            } else {
+                CatmullRom::try_new(keys.clone(), knots)?
+            };
+            let controls = curve.controls().to_vec();
+            Built::new(curve, keys).with_controls(controls)
+        }
+        Method::Gamma => {
+            let gamma = match params.get("gamma") {
+                None => Gammas::All(1.0),
+                Some(Value::Array(a)) => Gammas::Each(
+                    a.iter()
+                        .enumerate()
+                        .map(|(i, v)| {
+                            v.as_f64().ok_or_else(|| {
+                                field_error(format!("params.gamma[{i}]"), "must be a number")
+                            })
+                        })
+                        .collect::<Result<_, _>>()?,
+                ),
+                Some(v) => Gammas::All(v.as_f64().ok_or_else(|| {
+                    field_error("params.gamma", "must be a number or a list of numbers")
+                })?),
+            };
+            let last_edge =
+                LastEdge::from_name(params.choice("last_edge", &["formula", "paper-example"])?)?;
+            params.finish()?;
+            let curve = GammaSpline::try_new(keys.clone(), knots, gamma, last_edge)?;
+            let controls = curve.controls().to_vec();
+            let report = curve.joint_report();
+            Built::new(curve, keys).with_controls(controls).with_info(
+                "joints",
+                serde_json::to_value(report).unwrap_or(Value::Null),
+            )
+        }
         Method::CornerBlend => {
             // The book's orientation construction (rotations act by left multiplication).
             let order = params.order()?;

@@ -4,6 +4,13 @@
 //! Pobegailo's orientation circles, arc-blend splines and corner smoothing on S³
 //! (spec `pobegailo-s3.md`).
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::missing_assert_message,
+    clippy::cast_possible_truncation,
+    reason = "tests: a panic is the failure report"
+)]
+
 mod pobegailo_common;
 
 use core::f64::consts::PI;

@@ -4,6 +4,7 @@
 //! Helpers shared by the Pobegailo tests.
 
 #![allow(dead_code, reason = "each test file uses a subset")]
+#![allow(unreachable_pub, clippy::unwrap_used, reason = "test support module")]
 
 use spherekit::{Ambient, Curve, Manifold, Side};
 
