@@ -68,6 +68,8 @@
 pub use glam;
 
 mod ambient;
+mod beta_solve;
+mod beta_spline;
 mod bezier;
 mod curve;
 mod error;
@@ -81,9 +83,12 @@ mod slerp_jet;
 mod sn;
 
 pub use ambient::{Ambient, VecN};
+pub use beta_spline::{
+    BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
+};
 pub use bezier::{Bezier, cubic_jet, de_casteljau, de_casteljau_jet};
 pub use curve::{Curve, Jet, Side};
-pub use error::{PointError, SplineError};
+pub use error::{PointError, SolveError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
 pub use knots::Knots;
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
