@@ -10,7 +10,7 @@ use crate::ambient::{Ambient, VecN};
 use crate::beta_solve::{Coords, Settings, Shape, System};
 use crate::bezier::cubic_jet;
 use crate::curve::{Curve, Jet, Side, clamp_param};
-use crate::error::{SolveError, SplineError};
+use crate::error::{PointError, SolveError, SplineError};
 use crate::manifold::Manifold;
 use crate::slerp_jet::ScalarJet;
 
@@ -63,24 +63,24 @@ impl ShapeParam {
         for (i, &v) in values.iter().enumerate() {
             let at = match self {
                 Self::Constant(_) => String::new(),
-                Self::PerPoint(_) => format!("[{i}]"),
+                Self::PerPoint(_) => format!(" (element [{i}])"),
             };
             if !v.is_finite() {
                 return Err(SplineError::InvalidParameter {
                     name,
-                    reason: format!("{at} must be finite, got {v}"),
+                    reason: format!("must be finite, got {v}{at}"),
                 });
             }
             if strict && v <= 0.0 {
                 return Err(SplineError::InvalidParameter {
                     name,
-                    reason: format!("{at} must be > 0, got {v}"),
+                    reason: format!("must be > 0, got {v}{at}"),
                 });
             }
             if !strict && v < 0.0 {
                 return Err(SplineError::InvalidParameter {
                     name,
-                    reason: format!("{at} must be ≥ 0, got {v}"),
+                    reason: format!("must be ≥ 0, got {v}{at}"),
                 });
             }
         }
@@ -310,6 +310,8 @@ impl<P: Manifold> BetaSpline<P> {
     /// # Errors
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 2 points;
+    /// - [`SplineError::InvalidPoint`] with [`PointError::WrongDimension`] for points of
+    ///   spheres of different dimensions ([`SnPoint`](crate::SnPoint));
     /// - [`SplineError::InvalidParameter`] (`beta1`, `beta2`, `tolerance`,
     ///   `residual_tolerance`, `max_iterations`) for values out of range, non-finite, or lists
     ///   of a length other than `n + 1`;
@@ -344,6 +346,16 @@ impl<P: Manifold> BetaSpline<P> {
                 reason: "must be at least 1".into(),
             });
         }
+        let dim = points[0].to_vector().dim();
+        if let Some(index) = points.iter().position(|q| q.to_vector().dim() != dim) {
+            return Err(SplineError::InvalidPoint {
+                index,
+                reason: PointError::WrongDimension {
+                    expected: dim,
+                    got: points[index].to_vector().dim(),
+                },
+            });
+        }
         if let Some(index) = points.windows(2).position(|w| w[0].is_antipodal(&w[1])) {
             return Err(SplineError::Antipodal { index });
         }
@@ -360,6 +372,17 @@ impl<P: Manifold> BetaSpline<P> {
             .map(|(&b1, &b2)| gamma(b1, b2))
             .collect();
         let shape = shape_constants(&beta1, &gamma);
+        let in_unit = |v: &f64| (0.0..=1.0).contains(v);
+        if !(shape.eta.iter().all(in_unit)
+            && shape.omega.iter().all(in_unit)
+            && shape.delta.iter().all(in_unit))
+        {
+            // Only for extreme values (β₁ beyond about 1e150), where β₁²·γ overflows.
+            return Err(SplineError::InvalidParameter {
+                name: "beta1",
+                reason: "is too large: the arc ratios of eqs. (4)–(5) overflow".into(),
+            });
+        }
         let (aux, info) = if params.interpolate && count > 2 {
             let settings = Settings {
                 change_tolerance: tolerance,
@@ -623,6 +646,14 @@ fn solve<P: Manifold>(
     let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
     let basis = span_basis(&vectors);
     let rank = basis.len();
+    if rank < 2 {
+        // Unreachable after the coincidence and antipodality checks; never index with r − 1 < 0.
+        return Err(SolveError::NoConvergence {
+            iterations: 0,
+            residual: f64::INFINITY,
+        }
+        .into());
+    }
     let coords: Vec<Vec<f64>> = vectors
         .iter()
         .map(|v| basis.iter().map(|b| b.dot(v)).collect())

@@ -979,3 +979,92 @@ fn solver_names() {
     assert_eq!(BetaSolver::from_name("gauss"), None, "unknown");
     assert_eq!(BetaSolver::default(), BetaSolver::Newton, "default");
 }
+
+/// On S¹ (the smallest sphere) the interpolating spline with β = (1, 0) is the uniform cubic
+/// B-spline of the angles.
+#[test]
+fn circle_s1() {
+    let alpha: [f64; 5] = [0.2, 0.9, 1.3, 2.2, 2.6];
+    let data: Vec<SnPoint> = alpha
+        .iter()
+        .map(|a| SnPoint::try_new(vec![a.cos(), a.sin()]).unwrap())
+        .collect();
+    let c = BetaSpline::try_new(data.clone(), &BetaParams::default()).unwrap();
+    assert!(interpolation_error(&c, &data) < 1e-12, "interpolates");
+    let a: Vec<f64> = c
+        .auxiliary()
+        .iter()
+        .map(|d| d.coords()[1].atan2(d.coords()[0]))
+        .collect();
+    for i in 1..alpha.len() - 1 {
+        let lhs = a[i - 1] + 4.0 * a[i] + a[i + 1];
+        assert!((lhs - 6.0 * alpha[i]).abs() < 1e-11, "row {i}");
+    }
+    check_g1(&c);
+    check_jets(&c);
+}
+
+#[test]
+fn extreme_parameters_never_give_nan() {
+    let data = example1();
+    for (b1, b2) in [
+        (1e300, 0.0),
+        (1e-300, 0.0),
+        (1.0, f64::MAX),
+        (1e-300, f64::MAX),
+        (1e150, 1e300),
+        (1e-8, 1e8),
+    ] {
+        for interpolate in [false, true] {
+            for solver in [BetaSolver::Newton, BetaSolver::Jacobi] {
+                let params = BetaParams {
+                    beta1: b1.into(),
+                    beta2: b2.into(),
+                    interpolate,
+                    solver,
+                    max_iterations: Some(50),
+                    ..BetaParams::default()
+                };
+                match BetaSpline::try_new(data.clone(), &params) {
+                    Ok(c) => {
+                        assert!(
+                            c.controls().iter().all(|q| q.as_dvec3().is_finite()),
+                            "finite"
+                        );
+                        for k in 0..=30 {
+                            let j = c.jet(k as f64 * 0.1);
+                            assert!(
+                                j.point.as_dvec3().is_finite()
+                                    && j.velocity.is_finite()
+                                    && j.acceleration.is_finite(),
+                                "finite jet for β = ({b1}, {b2})"
+                            );
+                        }
+                        if interpolate {
+                            assert!(interpolation_error(&c, &data) < 1e-9, "interpolates");
+                        }
+                    }
+                    Err(
+                        SplineError::InvalidParameter { name: "beta1", .. } | SplineError::Solve(_),
+                    ) => {}
+                    Err(e) => panic!("unexpected error {e:?}"),
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn mixed_dimensions_are_rejected() {
+    let data = vec![
+        SnPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(),
+        SnPoint::try_new(vec![0.0, 1.0, 0.0, 0.0]).unwrap(),
+    ];
+    assert!(
+        matches!(
+            BetaSpline::try_new(data, &BetaParams::default()),
+            Err(SplineError::InvalidPoint { index: 1, .. })
+        ),
+        "different spheres"
+    );
+}
