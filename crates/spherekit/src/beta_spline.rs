@@ -242,6 +242,16 @@ pub struct SolveInfo {
 ///   normalised, stopped by the paper's rule `Σ‖Δdᵢ‖² < tolerance`, with an iteration limit and a
 ///   final check of the interpolation error against `residual_tolerance`.
 ///
+/// Decisions the paper leaves open (spec §9.5, §12.2 item 8): the Jacobi update is normalised
+/// (the literal update converges to the same points, more slowly); the residual is measured
+/// on the original points as the geodesic distance `dist(X(i), pᵢ)`; both solvers start from
+/// `dᵢ = pᵢ`. Newton has converged on every random problem where Jacobi did (and on some
+/// where Jacobi diverges, test `newton_converges_where_jacobi_does`); the remaining failures
+/// are problems without a solution near the data, which multistart experiments did not
+/// rescue either. Consecutive data points closer than [`COINCIDENT_TOLERANCE`] are rejected.
+/// The solvers compute in coordinates of an orthonormal basis of the span of the data, so
+/// data on a low-dimensional great sphere of S^m cost as little as on S².
+///
 /// Either reports [`solve_info`](Self::solve_info) or fails with
 /// [`SplineError::Solve`]`(`[`SolveError::NoConvergence`]`)`; it never returns a curve that
 /// does not interpolate. Some data/parameter combinations have no solution (for example the
