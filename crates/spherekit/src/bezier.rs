@@ -7,8 +7,8 @@ use crate::ambient::Ambient;
 use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::SplineError;
 use crate::geodesic::check_chain;
-use crate::manifold::Manifold;
-use crate::slerp_jet::{ScalarJet, VJet, slerp_jet_vec};
+use crate::manifold::{Manifold, renormalize};
+use crate::slerp_jet::{FixedArc, ScalarJet, VJet, slerp_jet_vec, slerp_point};
 
 /// A spherical Bézier curve of degree `n ≥ 1` on any sphere, by de Casteljau's algorithm with
 /// geodesic interpolation (Shoemake; spec §5.1, seeds 003 eqs. (2)–(3) and 004 "de Casteljau").
@@ -142,9 +142,15 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
 #[must_use]
 pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
     assert!(!ctrl.is_empty(), "de Casteljau needs a control point");
-    let mut level: Vec<VJet<P::Vector>> =
-        ctrl.iter().map(|p| VJet::constant(p.to_vector())).collect();
-    for n in (1..ctrl.len()).rev() {
+    // The first level has fixed endpoints: plain arcs.
+    let mut level: Vec<VJet<P::Vector>> = if ctrl.len() == 1 {
+        vec![VJet::constant(ctrl[0].to_vector())]
+    } else {
+        ctrl.windows(2)
+            .map(|w| first_level(&w[0], &w[1], s))
+            .collect()
+    };
+    for n in (1..ctrl.len().saturating_sub(1)).rev() {
         for i in 0..n {
             let next =
                 slerp_jet_vec(&level[i], &level[i + 1], s).unwrap_or_else(|| level[i].clone());
@@ -160,24 +166,113 @@ pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
     top.into_jet()
 }
 
+/// The jet of `G[p, q](s)` for fixed `p`, `q` (an arc; antipodal points fall back to `p`).
+fn first_level<P: Manifold>(p: &P, q: &P, s: ScalarJet) -> VJet<P::Vector> {
+    match FixedArc::try_new(p.to_vector(), q.to_vector()) {
+        Some(arc) => arc.jet(s),
+        None => VJet::constant(p.to_vector()),
+    }
+}
+
 /// [`de_casteljau_jet`] for a cubic, without heap allocation: the jet of `Q[p₀, p₁, p₂, p₃](s)`.
 #[must_use]
 pub fn cubic_jet<P: Manifold>(ctrl: [&P; 4], s: ScalarJet) -> Jet<P> {
-    let c = ctrl.map(|p| VJet::constant(p.to_vector()));
     let sl = |a: &VJet<P::Vector>, b: &VJet<P::Vector>| {
         slerp_jet_vec(a, b, s).unwrap_or_else(|| a.clone())
     };
-    let f = sl(&c[0], &c[1]);
-    let g = sl(&c[1], &c[2]);
-    let h = sl(&c[2], &c[3]);
+    let f = first_level(ctrl[0], ctrl[1], s);
+    let g = first_level(ctrl[1], ctrl[2], s);
+    let h = first_level(ctrl[2], ctrl[3], s);
     let m = sl(&f, &g);
     let n = sl(&g, &h);
     let mut top = sl(&m, &n);
     if s.value == 0.0 {
-        top.v = c[0].v.clone();
+        top.v = ctrl[0].to_vector();
     } else if s.value == 1.0 {
-        top.v = c[3].v.clone();
+        top.v = ctrl[3].to_vector();
     }
     debug_assert!(top.v.is_finite(), "non-finite cubic jet");
     top.into_jet()
+}
+
+/// One cubic spherical Bézier segment `Q[p₀, p₁, p₂, p₃]` with the three fixed arcs of its
+/// first de Casteljau level precomputed: the building block of piecewise-cubic constructions
+/// ([`CatmullRom`](crate::CatmullRom), Beta splines). Same curve as [`Bezier`] of degree 3.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{Bezier, Curve, CubicSegment, Manifold, S2Point, ScalarJet};
+///
+/// let p = [S2Point::X, S2Point::Y, S2Point::Z, S2Point::X];
+/// let seg = CubicSegment::try_new(p).unwrap();
+/// let whole = Bezier::try_new(p.to_vec()).unwrap();
+/// assert!(seg.eval(0.3).dist(&whole.eval(0.3)) < 1e-15);
+/// // Derivatives with respect to a global parameter t = 2 + 0.5·s (segment width 0.5):
+/// let j = seg.jet(ScalarJet::param(0.3, 2.0));
+/// assert!((j.velocity - whole.jet(0.3).velocity * 2.0).length() < 1e-14);
+/// ```
+#[derive(Clone, Debug)]
+pub struct CubicSegment<P: Manifold> {
+    ctrl: [P; 4],
+    arcs: [FixedArc<P::Vector>; 3],
+}
+
+impl<P: Manifold> CubicSegment<P> {
+    /// Precomputes the segment.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::Antipodal`] with the index (0, 1 or 2) of the first of two antipodal
+    /// consecutive control points.
+    pub fn try_new(ctrl: [P; 4]) -> Result<Self, SplineError> {
+        let arc = |i: usize| {
+            FixedArc::try_new(ctrl[i].to_vector(), ctrl[i + 1].to_vector())
+                .ok_or(SplineError::Antipodal { index: i })
+        };
+        let arcs = [arc(0)?, arc(1)?, arc(2)?];
+        Ok(Self { ctrl, arcs })
+    }
+
+    /// The control points.
+    #[must_use]
+    pub fn controls(&self) -> &[P; 4] {
+        &self.ctrl
+    }
+
+    /// The point at `s ∈ [0, 1]` (6 slerps, 3 of them with precomputed frames).
+    #[must_use]
+    pub fn eval(&self, s: f64) -> P {
+        if s == 0.0 {
+            return self.ctrl[0].clone();
+        }
+        if s == 1.0 {
+            return self.ctrl[3].clone();
+        }
+        let [f, g, h] = [0, 1, 2].map(|i| self.arcs[i].point_unnormalized(s));
+        let sl = |a: &P::Vector, b: &P::Vector| {
+            slerp_point(a.clone(), b.clone(), s).unwrap_or_else(|| renormalize(a.clone()))
+        };
+        let m = sl(&f, &g);
+        let n = sl(&g, &h);
+        P::from_vector_unchecked(sl(&m, &n))
+    }
+
+    /// The point and exact derivatives at the parameter jet `s` (see [`de_casteljau_jet`]).
+    #[must_use]
+    pub fn jet(&self, s: ScalarJet) -> Jet<P> {
+        let [f, g, h] = [0, 1, 2].map(|i| self.arcs[i].jet(s));
+        let sl = |a: &VJet<P::Vector>, b: &VJet<P::Vector>| {
+            slerp_jet_vec(a, b, s).unwrap_or_else(|| a.clone())
+        };
+        let m = sl(&f, &g);
+        let n = sl(&g, &h);
+        let mut top = sl(&m, &n);
+        if s.value == 0.0 {
+            top.v = self.ctrl[0].to_vector();
+        } else if s.value == 1.0 {
+            top.v = self.ctrl[3].to_vector();
+        }
+        top.into_jet()
+    }
 }

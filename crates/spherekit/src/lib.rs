@@ -71,6 +71,8 @@ mod ambient;
 mod beta_solve;
 mod beta_spline;
 mod bezier;
+mod catmull_rom;
+mod continuity;
 mod curve;
 mod error;
 mod geodesic;
@@ -81,12 +83,15 @@ mod s2;
 mod s3;
 mod slerp_jet;
 mod sn;
+mod squad;
 
 pub use ambient::{Ambient, VecN};
 pub use beta_spline::{
     BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
 };
-pub use bezier::{Bezier, cubic_jet, de_casteljau, de_casteljau_jet};
+pub use bezier::{Bezier, CubicSegment, cubic_jet, de_casteljau, de_casteljau_jet};
+pub use catmull_rom::CatmullRom;
+pub use continuity::{JointContinuity, continuity};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SolveError, SplineError};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
@@ -96,3 +101,4 @@ pub use s2::S2Point;
 pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
 pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use sn::SnPoint;
+pub use squad::Squad;

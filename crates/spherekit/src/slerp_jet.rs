@@ -26,10 +26,15 @@
 //! divided by a small angle: coincident and nearly coincident endpoints give exact, finite
 //! jets. The angle θ comes from `2·atan2(|a − b|, |a + b|)` and `sin θ = |a − b|·|a + b|/2`,
 //! accurate near 0 and near π.
+//!
+//! Near π the coefficients grow like `1/sin θ` and `a`, `b` are nearly parallel, so the result
+//! carries the problem's own conditioning (errors of order `ε/(π − θ)`); the normal components
+//! of `G′` and `G″` are then restored exactly (`G·G′ = 0`, `G·G″ = −|G′|²`). Exactly antipodal
+//! endpoints (within [`ANTIPODAL_TOLERANCE`]) have no geodesic and give `None`.
 
 use crate::ambient::Ambient;
 use crate::curve::Jet;
-use crate::manifold::{ANTIPODAL_TOLERANCE, Manifold, renormalize};
+use crate::manifold::{ANTIPODAL_TOLERANCE, Manifold, geodesic_frame, renormalize};
 use crate::math;
 
 /// A scalar function of the curve parameter with its first and second derivatives.
@@ -208,6 +213,91 @@ impl<V: Ambient> VJet<V> {
     }
 }
 
+/// A fixed great-circle arc `G[p, q](s) = cos(sθ)·p + sin(sθ)·e` with its frame precomputed,
+/// for the first level of a pyramid whose control points do not move.
+#[derive(Clone, Debug)]
+pub(crate) struct FixedArc<V> {
+    start: V,
+    end: V,
+    /// Unit tangent at `start` towards `end` (zero for a zero-length arc).
+    dir: V,
+    theta: f64,
+}
+
+impl<V: Ambient> FixedArc<V> {
+    /// `None` for antipodal endpoints.
+    pub(crate) fn try_new(p: V, q: V) -> Option<Self> {
+        let (theta, dir) = geodesic_frame(&p, &q)?;
+        Some(Self {
+            start: p,
+            end: q,
+            dir,
+            theta,
+        })
+    }
+
+    /// The point at fraction `s`; exact at 0 and 1.
+    #[inline]
+    pub(crate) fn point(&self, s: f64) -> V {
+        if s == 0.0 {
+            return self.start.clone();
+        }
+        if s == 1.0 {
+            return self.end.clone();
+        }
+        renormalize(self.point_unnormalized(s))
+    }
+
+    /// `cos(sθ)·p + sin(sθ)·e` without the final rescaling (unit up to a few ulps): for
+    /// intermediate points of a pyramid, which [`slerp_point`] renormalises anyway.
+    #[inline]
+    pub(crate) fn point_unnormalized(&self, s: f64) -> V {
+        let (sn, cs) = math::sin_cos(s * self.theta);
+        self.start.clone() * cs + self.dir.clone() * sn
+    }
+
+    /// The jet at the fraction jet `s`:
+    /// `G′ = θs′·T`, `G″ = θs″·T − (θs′)²·G` with `T = −sin(sθ)·p + cos(sθ)·e`.
+    #[inline]
+    pub(crate) fn jet(&self, s: ScalarJet) -> VJet<V> {
+        let (sn, cs) = math::sin_cos(s.value * self.theta);
+        let v = self.point(s.value);
+        let tangent = self.dir.clone() * cs - self.start.clone() * sn;
+        let w = self.theta * s.first;
+        VJet {
+            d: tangent.clone() * w,
+            dd: tangent * (self.theta * s.second) - v.clone() * (w * w),
+            v,
+        }
+    }
+}
+
+/// The point `G[a, b](u)` for vectors that are unit up to a few ulps; `None` when antipodal.
+///
+/// The fast path of the pyramids' point evaluation: as [`Manifold::try_slerp`] but without
+/// forming the unit direction separately (`|b − cos θ·a| = sin θ = |a − b|·|a + b|/2`).
+#[inline]
+pub(crate) fn slerp_point<V: Ambient>(a: V, b: V, u: f64) -> Option<V> {
+    let diff = b.clone() - a.clone();
+    let sum = b + a.clone();
+    let (d, s) = (diff.length(), sum.length());
+    // b − cos θ·a without cancellation: from the difference near 0, from the sum near π.
+    let w = if d <= s {
+        if d == 0.0 {
+            return Some(a);
+        }
+        diff + a.clone() * (0.5 * d * d)
+    } else {
+        if s <= ANTIPODAL_TOLERANCE {
+            return None;
+        }
+        sum - a.clone() * (0.5 * s * s)
+    };
+    let theta = 2.0 * math::atan2(d, s);
+    let (sn, cs) = math::sin_cos(u * theta);
+    Some(renormalize(a * cs + w * (sn / (0.5 * d * s))))
+}
+
 /// Ambient-vector form of [`slerp_jet`]; `None` if `a(t)` and `b(t)` are antipodal.
 pub(crate) fn slerp_jet_vec<V: Ambient>(a: &VJet<V>, b: &VJet<V>, u: ScalarJet) -> Option<VJet<V>> {
     let diff = b.v.clone() - a.v.clone();
@@ -271,6 +361,11 @@ pub(crate) fn slerp_jet_vec<V: Ambient>(a: &VJet<V>, b: &VJet<V>, u: ScalarJet) 
         + b.v.clone() * cb.second
         + b.d.clone() * (2.0 * cb.first)
         + b.dd.clone() * cb.value;
+    // Restore the exact normal components (G·G′ = 0, G·G″ = −|G′|²). Analytically a no-op;
+    // numerically it removes the cancellation error of the nearly parallel `a`, `b` when they
+    // are close to antipodal, where the coefficients grow like 1/sin θ.
+    let d = d.clone() - v.clone() * v.dot(&d);
+    let dd = dd.clone() - v.clone() * (v.dot(&dd) + d.dot(&d));
     Some(VJet { v, d, dd })
 }
 
@@ -377,5 +472,105 @@ mod tests {
         let dd_fd = (g(t + h) - 2.0 * g(t) + g(t - h)) / (h * h);
         assert!((j.d - d_fd).length() < 1e-6, "{:?} {:?}", j.d, d_fd);
         assert!((j.dd - dd_fd).length() < 1e-5, "{:?} {:?}", j.dd, dd_fd);
+    }
+
+    /// Fixed endpoints at angles across the whole range (series, switch, closed form, near π):
+    /// the moving-endpoint formula must reduce to the arc `G′ = θu′T`, `G″ = −(θu′)²G`.
+    #[test]
+    fn fixed_endpoints_at_all_angles() {
+        for theta in [
+            0.0_f64,
+            1e-12,
+            1e-9,
+            1e-5,
+            0.3,
+            0.999_999,
+            1.0,
+            1.000_001,
+            2.0,
+            3.0,
+            core::f64::consts::PI - 2.65e-6,
+        ] {
+            let a = DVec3::X;
+            let b = DVec3::new(theta.cos(), theta.sin(), 0.0);
+            let arc = FixedArc::try_new(a, b).unwrap();
+            for u in [0.0, 0.25, 0.5, 0.9, 1.0] {
+                let uj = ScalarJet {
+                    value: u,
+                    first: 1.3,
+                    second: -0.7,
+                };
+                let j = slerp_jet_vec(&VJet::constant(a), &VJet::constant(b), uj).unwrap();
+                let r = arc.jet(uj);
+                // Near π the problem itself is ill-conditioned: errors grow like ε/(π − θ).
+                let scale = 1.0 + 1.0 / (theta - core::f64::consts::PI).abs();
+                assert!(
+                    (j.v - r.v).length() < 4e-16 * scale,
+                    "point θ={theta} u={u}"
+                );
+                assert!(
+                    (j.d - r.d).length() < 1e-15 * scale,
+                    "velocity θ={theta} u={u}: {:?} {:?}",
+                    j.d,
+                    r.d
+                );
+                assert!(
+                    (j.dd - r.dd).length() < 1e-14 * scale,
+                    "acceleration θ={theta} u={u}: {:?} vs {:?}",
+                    j.dd,
+                    r.dd
+                );
+            }
+        }
+    }
+
+    /// Endpoints moving along geodesics at separations from 1e-8 to nearly π.
+    #[test]
+    fn moving_endpoints_at_all_separations() {
+        let geo = |p: DVec3, v: DVec3, t: f64| {
+            let n = v.length();
+            p * (n * t).cos() + v / n * (n * t).sin()
+        };
+        let geo_jet = |p: DVec3, v: DVec3| VJet {
+            v: p,
+            d: v,
+            dd: -p * v.length_squared(),
+        };
+        for theta in [1e-8_f64, 1e-4, 0.5, 1.0, 2.5, 3.1] {
+            let a0 = DVec3::X;
+            let b0 = DVec3::new(theta.cos(), theta.sin(), 0.0);
+            let va = DVec3::new(0.0, 0.3, -0.8);
+            let vb = DVec3::new(-0.2 * theta.sin(), 0.2 * theta.cos(), 0.5);
+            let u = ScalarJet {
+                value: 0.35,
+                first: 0.6,
+                second: 0.2,
+            };
+            let ut = |t: f64| 0.35 + 0.6 * t + 0.1 * t * t;
+            let g = |t: f64| {
+                let (a, b) = (geo(a0, va, t), geo(b0, vb, t));
+                slerp_jet_vec(
+                    &VJet::constant(a),
+                    &VJet::constant(b),
+                    ScalarJet::constant(ut(t)),
+                )
+                .unwrap()
+                .v
+            };
+            let j = slerp_jet_vec(&geo_jet(a0, va), &geo_jet(b0, vb), u).unwrap();
+            let h = 2e-5;
+            let d = (g(h) - g(-h)) / (2.0 * h);
+            let dd = (g(h) - 2.0 * g(0.0) + g(-h)) / (h * h);
+            assert!(
+                (j.d - d).length() < 1e-7 * j.d.length().max(1.0),
+                "θ={theta}: {:?} {d:?}",
+                j.d
+            );
+            assert!(
+                (j.dd - dd).length() < 1e-5 * j.dd.length().max(1.0),
+                "θ={theta}: {:?} {dd:?}",
+                j.dd
+            );
+        }
     }
 }

@@ -4,6 +4,10 @@
 //! Shared helpers for the tests of the classic curves (Bézier, squad, Catmull-Rom).
 
 #![allow(dead_code, reason = "each test file uses a different subset")]
+#![allow(
+    clippy::unwrap_used,
+    reason = "test helpers unwrap known-valid fixtures"
+)]
 
 use spherekit::glam::{DQuat, DVec3};
 use spherekit::{Ambient, Curve, Manifold, S2Point, Side, SnPoint, UnitQuat};

@@ -1,0 +1,227 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Catmull-Rom splines on spheres: piecewise cubic spherical Bézier curves whose inner control
+//! points come from central differences of the keys (textbook construction, seed 001 §9.1–9.3).
+
+use crate::bezier::CubicSegment;
+use crate::curve::{Curve, Jet, Side};
+use crate::error::SplineError;
+use crate::geodesic::check_chain;
+use crate::knots::Knots;
+use crate::manifold::Manifold;
+use crate::s3::UnitQuat;
+use crate::slerp_jet::ScalarJet;
+
+/// A Catmull-Rom spline through `c₀ … cₙ` (n ≥ 1) steered by two extra end points: the input is
+/// `c₋₁, c₀, …, cₙ, cₙ₊₁` (n + 3 points); `c₋₁` and `cₙ₊₁` set the end tangents and are not
+/// interpolated. Knots `t₀ < … < tₙ` belong to `c₀ … cₙ` (default `0, 1, …, n`). Spec §7.
+///
+/// Segment `i` on `[tᵢ, tᵢ₊₁]` (width `hᵢ`, `τ = (t − tᵢ)/hᵢ`) is the cubic de Casteljau curve
+/// with control points `cᵢ, dᵢ, eᵢ, cᵢ₊₁` (6 slerps, [`CubicSegment`]), where `dᵢ`, `eᵢ` step
+/// from `cᵢ`, `cᵢ₊₁` a third of the segment along the tangents `Tᵢ` (velocities in `t`):
+///
+/// ```text
+/// Wᵢ = tᵢ₊₁ − tᵢ₋₁                          with t₋₁ = t₀ − h₀,  tₙ₊₁ = tₙ + hₙ₋₁
+/// dᵢ = exp_{cᵢ}( hᵢ·Tᵢ/3 ),   eᵢ = exp_{cᵢ₊₁}( −hᵢ·Tᵢ₊₁/3 )
+/// ```
+///
+/// Two tangent rules:
+///
+/// - [`try_new`](Self::try_new) (any sphere): `Tᵢ = (log_{cᵢ}(cᵢ₊₁) − log_{cᵢ}(cᵢ₋₁))/Wᵢ`, the
+///   intrinsic central difference.
+/// - [`try_new_quaternion`](Self::try_new_quaternion) (S³, the textbook rule of seed 001 §9.3):
+///   `Tᵢ = log(Xᵢ)·cᵢ/Wᵢ` with `Xᵢ = cᵢ₊₁·cᵢ₋₁⁻¹`, replaced by `−Xᵢ` when its scalar part is
+///   negative (short-path rule, applied to the base of both `dᵢ` and `eᵢ₋₁`, spec §12.3). For
+///   uniform knots this is `dᵢ = Xᵢ^(1/6)·cᵢ`, `eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁`, exactly the seed.
+///
+/// Both rules agree with each other (and with the scalar Catmull-Rom spline of the angles) when
+/// all points lie on one great circle at angles αₖ with |αₖ₊₁ − αₖ₋₁| < π/2 (so that the
+/// short-path rule does not act) and |αₖ₊₁ − αₖ| < π. Since
+/// `c′(tᵢ±) = 3·log_{cᵢ}(dᵢ)/hᵢ = −3·log_{cᵢ}(eᵢ₋₁)/hᵢ₋₁ = Tᵢ`, the spline is **C¹ in t for any
+/// knots** (the factor `hᵢ/3` scales the tangent per segment); it is not C² in general. For
+/// uniform knots `Tᵢ` is half the difference over two steps, as in the Euclidean
+/// `c′(i) = (cᵢ₊₁ − cᵢ₋₁)/2`.
+///
+/// Keys are used as given (no sign flips besides the short-path rule of the quaternion tangent);
+/// canonicalise quaternion keys with [`unflip`](crate::unflip) first.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{continuity, CatmullRom, Curve, S2Point};
+/// use spherekit::glam::DVec3;
+///
+/// let p = |x: f64, y: f64, z: f64| S2Point::try_new(DVec3::new(x, y, z)).unwrap();
+/// let pts = vec![p(1.0, -0.5, 0.0), S2Point::X, p(1.0, 1.0, 0.3), S2Point::Y, p(-0.5, 1.0, 0.5)];
+/// let c = CatmullRom::try_new(pts, None).unwrap();
+/// assert_eq!(c.domain(), [0.0, 2.0]);
+/// assert_eq!(c.eval(1.0), p(1.0, 1.0, 0.3));
+/// assert_eq!(c.controls().len(), 7); // c0 d0 e0 c1 d1 e1 c2
+/// assert!(continuity(&c)[0].c1 < 1e-12);
+/// ```
+#[derive(Clone, Debug)]
+pub struct CatmullRom<P: Manifold> {
+    points: Vec<P>,
+    knots: Knots,
+    controls: Vec<P>,
+    segments: Vec<CubicSegment<P>>,
+}
+
+/// `t₋₁ … tₙ₊₁`: the knots with the end intervals mirrored.
+fn extended_knots(knots: &Knots) -> Vec<f64> {
+    let k = knots.as_slice();
+    let n = k.len() - 1;
+    let mut e = Vec::with_capacity(n + 3);
+    e.push(k[0] - knots.width(0));
+    e.extend_from_slice(k);
+    e.push(k[n] + knots.width(n - 1));
+    e
+}
+
+impl<P: Manifold> CatmullRom<P> {
+    /// Builds the spline with the intrinsic central-difference tangent (any sphere).
+    ///
+    /// `points` are `c₋₁, c₀, …, cₙ, cₙ₊₁`; `knots` are the `n + 1` parameters of `c₀ … cₙ`.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 4 points; [`SplineError::Antipodal`] for
+    /// antipodal consecutive points (index into `points`) or, in rare configurations, for
+    /// antipodal derived control points of segment `i` (reported as index `i + 1`, the segment's
+    /// first key); the knot errors of [`Knots::or_uniform`] (`n + 1` knots).
+    pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_chain(&points, 4)?;
+        let knots = Knots::or_uniform(knots, points.len() - 2)?;
+        let ext = extended_knots(&knots);
+        // tangents[k] belongs to points[k + 1] = c_k, k = 0..=n.
+        let tangents: Vec<P::Vector> = (1..points.len() - 1)
+            .map(|j| {
+                let c = &points[j];
+                (c.log(&points[j + 1]) - c.log(&points[j - 1])) * (1.0 / (ext[j + 1] - ext[j - 1]))
+            })
+            .collect();
+        Self::assemble(points, knots, |c, k, step| {
+            c.exp(&(tangents[k].clone() * step))
+        })
+    }
+
+    /// Builds the segments from a rule `step(c_k, k, s) = point at parameter offset s along the
+    /// tangent at c_k`.
+    fn assemble(
+        points: Vec<P>,
+        knots: Knots,
+        step: impl Fn(&P, usize, f64) -> P,
+    ) -> Result<Self, SplineError> {
+        let n = knots.segment_count();
+        let mut controls = Vec::with_capacity(3 * n + 1);
+        let mut segments = Vec::with_capacity(n);
+        for i in 0..n {
+            let h = knots.width(i);
+            let (c0, c1) = (&points[i + 1], &points[i + 2]);
+            let d = step(c0, i, h / 3.0);
+            let e = step(c1, i + 1, -h / 3.0);
+            let seg = CubicSegment::try_new([c0.clone(), d, e, c1.clone()])
+                .map_err(|_| SplineError::Antipodal { index: i + 1 })?;
+            controls.extend_from_slice(&seg.controls()[..3]);
+            segments.push(seg);
+        }
+        controls.push(points[n + 1].clone());
+        Ok(Self {
+            points,
+            knots,
+            controls,
+            segments,
+        })
+    }
+
+    /// The input points `c₋₁ … cₙ₊₁`.
+    #[must_use]
+    pub fn points(&self) -> &[P] {
+        &self.points
+    }
+
+    /// The Bézier control points of all segments, `c₀, d₀, e₀, c₁, d₁, e₁, …, cₙ` (3n + 1
+    /// points; segment `i` uses entries `3i … 3i + 3`).
+    #[must_use]
+    pub fn controls(&self) -> &[P] {
+        &self.controls
+    }
+
+    /// The knots of `c₀ … cₙ`.
+    #[must_use]
+    pub fn knots(&self) -> &Knots {
+        &self.knots
+    }
+}
+
+impl CatmullRom<UnitQuat> {
+    /// Builds the quaternion spline with the textbook tangent rule of seed 001 §9.3:
+    /// `dᵢ = Xᵢ^(hᵢ/(3Wᵢ))·cᵢ`, `eᵢ = Xᵢ₊₁^(−hᵢ/(3Wᵢ₊₁))·cᵢ₊₁` with `Xᵢ = ±cᵢ₊₁·cᵢ₋₁⁻¹` (sign
+    /// making the scalar part non-negative). Arguments and errors as [`try_new`](Self::try_new).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{CatmullRom, Curve, UnitQuat};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// // Rotations about one axis: the spline is the scalar Catmull-Rom spline of the angles.
+    /// let q = |a: f64| UnitQuat::exp(DVec3::Z * a);
+    /// let a = [0.0, 0.1, 0.4, 0.6, 0.65];
+    /// let c = CatmullRom::try_new_quaternion(a.iter().map(|&x| q(x)).collect(), None).unwrap();
+    /// // Segment 0 has Bézier control angles c₀, c₀ + (c₁ − c₋₁)/6, c₁ − (c₂ − c₀)/6, c₁.
+    /// let s = 0.5_f64;
+    /// let v = [0.1, 0.1 + 0.4 / 6.0, 0.4 - 0.5 / 6.0, 0.4];
+    /// let w = [1.0, 3.0, 3.0, 1.0];
+    /// let expected: f64 = (0..4).map(|k| w[k] * s.powi(k as i32) * (1.0 - s).powi(3 - k as i32) * v[k]).sum();
+    /// assert!((c.eval(0.5).as_dquat().z.atan2(c.eval(0.5).as_dquat().w) - expected).abs() < 1e-15);
+    /// ```
+    pub fn try_new_quaternion(
+        points: Vec<UnitQuat>,
+        knots: Option<Vec<f64>>,
+    ) -> Result<Self, SplineError> {
+        check_chain(&points, 4)?;
+        let knots = Knots::or_uniform(knots, points.len() - 2)?;
+        let ext = extended_knots(&knots);
+        // logs[k] = log(X_k)/W_k for c_k = points[k + 1], k = 0..=n.
+        let logs: Vec<glam::DVec3> = (1..points.len() - 1)
+            .map(|j| {
+                let mut x = points[j + 1].mul(points[j - 1].conjugate());
+                if x.scalar() < 0.0 {
+                    x = x.neg();
+                }
+                x.log() * (1.0 / (ext[j + 1] - ext[j - 1]))
+            })
+            .collect();
+        Self::assemble(points, knots, |c, k, step| {
+            UnitQuat::exp(logs[k] * step).mul(*c)
+        })
+    }
+}
+
+impl<P: Manifold> Curve for CatmullRom<P> {
+    type Point = P;
+
+    fn domain(&self) -> [f64; 2] {
+        self.knots.domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        self.knots.as_slice()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
+        let (i, tau) = self.knots.locate(t, side);
+        self.segments[i].jet(ScalarJet::param(tau, 1.0 / self.knots.width(i)))
+    }
+
+    fn eval(&self, t: f64) -> P {
+        let (i, tau) = self.knots.locate(t, Side::Right);
+        self.segments[i].eval(tau)
+    }
+}

@@ -1,0 +1,80 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Continuity report of a piecewise curve at its joints, from the exact one-sided jets.
+
+use crate::ambient::Ambient;
+use crate::curve::{Curve, Side};
+use crate::manifold::Manifold;
+
+/// The jumps of a curve at one interior joint.
+///
+/// Each jump is the ambient Euclidean norm of the difference between the one-sided limits
+/// ([`Side::Left`] minus [`Side::Right`]): `c0` of the point, `c1` of the first derivative, `c2`
+/// of the second derivative, all with respect to the curve parameter. A curve is Cᵏ at the joint
+/// when `c0 … ck` vanish (to rounding; typically below 1e-12 for exact constructions).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointContinuity {
+    /// The joint parameter.
+    pub t: f64,
+    /// `|c(t⁻) − c(t⁺)|`.
+    pub c0: f64,
+    /// `|c′(t⁻) − c′(t⁺)|`.
+    pub c1: f64,
+    /// `|c″(t⁻) − c″(t⁺)|`.
+    pub c2: f64,
+}
+
+impl JointContinuity {
+    /// The highest order `k ≤ 2` such that all jumps up to order `k` are at most `tol`; `None`
+    /// if even the points differ by more than `tol`.
+    #[must_use]
+    pub fn order(&self, tol: f64) -> Option<u8> {
+        if self.c0 > tol {
+            None
+        } else if self.c1 > tol {
+            Some(0)
+        } else if self.c2 > tol {
+            Some(1)
+        } else {
+            Some(2)
+        }
+    }
+}
+
+/// The jumps of point, velocity and acceleration at every interior joint of `curve` (the
+/// entries of [`Curve::joints`] other than the two ends), from [`Curve::jet_at`] on both sides.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{continuity, GeodesicSpline, S2Point};
+///
+/// let c = GeodesicSpline::try_new(vec![S2Point::X, S2Point::Y, S2Point::Z], None).unwrap();
+/// let report = continuity(&c);
+/// assert_eq!(report.len(), 1);
+/// assert_eq!(report[0].t, 1.0);
+/// assert!(report[0].c0 < 1e-15); // continuous …
+/// assert!(report[0].c1 > 1.0); // … with a corner
+/// assert_eq!(report[0].order(1e-12), Some(0));
+/// ```
+#[must_use]
+pub fn continuity<C: Curve>(curve: &C) -> Vec<JointContinuity> {
+    let joints = curve.joints();
+    if joints.len() < 3 {
+        return Vec::new();
+    }
+    joints[1..joints.len() - 1]
+        .iter()
+        .map(|&t| {
+            let l = curve.jet_at(t, Side::Left);
+            let r = curve.jet_at(t, Side::Right);
+            JointContinuity {
+                t,
+                c0: (l.point.to_vector() - r.point.to_vector()).length(),
+                c1: (l.velocity - r.velocity).length(),
+                c2: (l.acceleration - r.acceleration).length(),
+            }
+        })
+        .collect()
+}
