@@ -8,7 +8,7 @@ use glam::{DVec3, DVec4};
 
 use crate::ambient::{Ambient, VecN};
 use crate::beta_solve::{Coords, Settings, Shape, System};
-use crate::bezier::cubic_jet;
+use crate::bezier::CubicSegment;
 use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::{PointError, SolveError, SplineError};
 use crate::manifold::Manifold;
@@ -213,7 +213,8 @@ pub struct SolveInfo {
 /// X(t)      = Q[q_{i−1,0}, q_{i−1,1}, q_{i−1,2}, q_{i,0}](t − i + 1),   t ∈ [i − 1, i]
 /// ```
 ///
-/// with `Q` the cubic de Casteljau spherical Bézier curve ([`cubic_jet`]). The curve is
+/// with `Q` the cubic de Casteljau spherical Bézier curve ([`CubicSegment`], spec §5.1, with
+/// exact derivatives). The curve is
 /// analytic inside each segment, passes through `q_{i,0}` at `t = i`, and is **G¹** at every
 /// joint: the unit tangents agree and `X′(i⁺) = β₁ᵢ·X′(i⁻)` (C¹ where β₁ᵢ = 1). It is not C² on
 /// the sphere in general, even for β₁ = 1, β₂ = 0. On one great circle the angle is the
@@ -311,6 +312,7 @@ pub struct BetaSpline<P: Manifold> {
     gamma: Vec<f64>,
     joints: Vec<f64>,
     info: Option<SolveInfo>,
+    segments: Vec<CubicSegment<P>>,
 }
 
 impl<P: Manifold> BetaSpline<P> {
@@ -448,10 +450,24 @@ impl<P: Manifold> BetaSpline<P> {
                 SplineError::Antipodal { index }
             }
         })?;
+        let segments = controls
+            .windows(4)
+            .step_by(3)
+            .map(|c| {
+                CubicSegment::try_new([c[0].clone(), c[1].clone(), c[2].clone(), c[3].clone()])
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|_| {
+                SplineError::Solve(SolveError::NoConvergence {
+                    iterations: info.map_or(0, |i| i.iterations),
+                    residual: f64::INFINITY,
+                })
+            })?;
         Ok(Self {
             points,
             aux,
             controls,
+            segments,
             beta1,
             beta2,
             gamma,
@@ -488,6 +504,16 @@ impl<P: Manifold> BetaSpline<P> {
     #[must_use]
     pub fn segment_controls(&self, i: usize) -> &[P] {
         &self.controls[3 * i..3 * i + 4]
+    }
+
+    /// Segment `i` (`0 ≤ i < n`) as a cubic spherical Bézier curve on `s ∈ [0, 1]`, `s = t − i`.
+    ///
+    /// # Panics
+    ///
+    /// If `i ≥ n`.
+    #[must_use]
+    pub fn segment(&self, i: usize) -> &CubicSegment<P> {
+        &self.segments[i]
     }
 
     /// The number of segments `n`.
@@ -534,13 +560,12 @@ impl<P: Manifold> Curve for BetaSpline<P> {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.locate(t, side);
-        let c = self.segment_controls(i);
-        cubic_jet([&c[0], &c[1], &c[2], &c[3]], ScalarJet::param(s, 1.0))
+        self.segments[i].jet(ScalarJet::param(s, 1.0))
     }
 
     fn eval(&self, t: f64) -> P {
         let (i, s) = self.locate(t, Side::Right);
-        crate::bezier::de_casteljau(self.segment_controls(i), s)
+        self.segments[i].eval(s)
     }
 }
 
