@@ -1068,3 +1068,84 @@ fn mixed_dimensions_are_rejected() {
         "different spheres"
     );
 }
+
+/// Random configurations with tiny, ordinary, large and nearly antipodal steps, random shape
+/// parameters, both solvers and both modes: either a finite interpolating curve or a typed
+/// error, never NaN or a panic.
+#[test]
+fn random_configurations_are_finite_or_typed_errors() {
+    let mut rng = Rng(31337);
+    for trial in 0..120 {
+        let step = [1e-9, 1e-6, 0.3, 1.0, 2.0, 3.14][trial % 6];
+        let n = 2 + trial % 5;
+        let data = s2(&walk(&mut rng, n, 3, 0.5 * step, step));
+        let params = BetaParams {
+            beta1: (0..=n)
+                .map(|_| 10f64.powf(rng.range(-2.0, 2.0)))
+                .collect::<Vec<_>>()
+                .into(),
+            beta2: (0..=n)
+                .map(|_| {
+                    if rng.f64() < 0.5 {
+                        0.0
+                    } else {
+                        10f64.powf(rng.range(-3.0, 3.0))
+                    }
+                })
+                .collect::<Vec<_>>()
+                .into(),
+            interpolate: trial % 3 != 0,
+            solver: if (trial / 6) % 2 == 0 {
+                BetaSolver::Newton
+            } else {
+                BetaSolver::Jacobi
+            },
+            max_iterations: Some(300),
+            ..BetaParams::default()
+        };
+        let result = BetaSpline::try_new(data.clone(), &params);
+        if params.interpolate && params.solver == BetaSolver::Jacobi && result.is_ok() {
+            let newton = BetaParams {
+                solver: BetaSolver::Newton,
+                ..params.clone()
+            };
+            assert!(
+                BetaSpline::try_new(data.clone(), &newton).is_ok(),
+                "trial {trial}: Jacobi converged, Newton did not"
+            );
+        }
+        match result {
+            Ok(c) => {
+                for k in 0..=40 {
+                    let t = n as f64 * k as f64 / 40.0;
+                    let j = c.jet(t);
+                    let x = j.point.as_dvec3();
+                    assert!(
+                        x.is_finite() && j.velocity.is_finite() && j.acceleration.is_finite(),
+                        "trial {trial}: finite jet at {t}"
+                    );
+                    assert!(
+                        (x.length() - 1.0).abs() < 1e-14,
+                        "trial {trial}: unit at {t}"
+                    );
+                }
+                if params.interpolate {
+                    let tol = if params.solver == BetaSolver::Newton {
+                        1e-12
+                    } else {
+                        1e-9
+                    };
+                    assert!(
+                        interpolation_error(&c, &data) <= tol,
+                        "trial {trial}: interpolates"
+                    );
+                }
+            }
+            Err(SplineError::Solve(SolveError::NoConvergence { residual, .. })) => {
+                assert!(!residual.is_nan(), "trial {trial}: residual is a number");
+            }
+            Err(SplineError::Coincident { .. } | SplineError::Antipodal { .. }) => {}
+            Err(e) => panic!("trial {trial}: unexpected error {e:?}"),
+        }
+    }
+}
