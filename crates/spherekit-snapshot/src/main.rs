@@ -85,13 +85,8 @@ fn run(args: &[String]) -> Result<(), Failure> {
 
 fn methods() {
     for m in Method::ALL {
-        let status = if m.is_implemented() {
-            ""
-        } else {
-            "  (not implemented yet)"
-        };
         println!(
-            "{:<14} {:<14} {}{status}",
+            "{:<14} {:<14} {}",
             m.id(),
             m.support().describe(),
             m.summary()

@@ -40,10 +40,10 @@ use serde::Deserialize;
 use serde_json::{Map, Value, json};
 
 use crate::{
-    Ambient, ArcBlend, Bezier, CatmullRom, CornerBlend, CornerBlendS3, Curve,
-    DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline, KimBezier, LastEdge,
-    MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, SnPoint, SplineError, Squad,
-    UnitQuat, VecN, angular_velocity_acceleration, unflip,
+    Ambient, ArcBlend, BetaParams, BetaSolver, BetaSpline, Bezier, CatmullRom, CornerBlend,
+    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline,
+    KimBezier, LastEdge, MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, ShapeParam,
+    SnPoint, SplineError, Squad, UnitQuat, VecN, angular_velocity_acceleration, unflip,
 };
 
 /// The most samples (or `eval_at` parameters) a scene may ask for.
@@ -70,8 +70,6 @@ pub enum SceneError {
     },
     /// The curve could not be built.
     Spline(SplineError),
-    /// The method id is known but not implemented yet.
-    NotImplemented(Method),
     /// An error in one curve of a scene's `curves` list.
     InCurve {
         /// Index into `curves`.
@@ -87,9 +85,6 @@ impl fmt::Display for SceneError {
             Self::Json(m) => write!(f, "invalid scene JSON: {m}"),
             Self::Field { field, message } => write!(f, "{field}: {message}"),
             Self::Spline(e) => write!(f, "{e}"),
-            Self::NotImplemented(m) => {
-                write!(f, "method: \"{}\" is not implemented yet", m.id())
-            }
             Self::InCurve { index, error } => write!(f, "curves[{index}].{error}"),
         }
     }
@@ -205,8 +200,6 @@ pub enum Support {
     All,
     /// S³ only.
     S3,
-    /// S² and S³.
-    S2S3,
 }
 
 impl Method {
@@ -276,12 +269,6 @@ impl Method {
         }
     }
 
-    /// Whether the method is implemented in this build.
-    #[must_use]
-    pub fn is_implemented(self) -> bool {
-        !matches!(self, Self::Beta)
-    }
-
     /// Parses a method id.
     ///
     /// # Errors
@@ -301,7 +288,6 @@ impl Method {
         match self.support() {
             Support::All => true,
             Support::S3 => space == Space::S3,
-            Support::S2S3 => matches!(space, Space::S2 | Space::S3),
         }
     }
 }
@@ -313,7 +299,6 @@ impl Support {
         match self {
             Self::All => "S2, S3, S<m>",
             Self::S3 => "S3",
-            Self::S2S3 => "S2, S3",
         }
     }
 }
@@ -490,9 +475,6 @@ impl CurveSpec {
     }
 
     fn build(&self, space: Space) -> Result<BuiltCurve, SceneError> {
-        if !self.method.is_implemented() {
-            return Err(SceneError::NotImplemented(self.method));
-        }
         let params = Params::new(self.method, &self.params);
         Ok(match space {
             Space::S2 => BuiltCurve::S2(build_any(self, points(&self.points)?, params)?),
@@ -610,7 +592,7 @@ impl Scene {
     /// # Errors
     ///
     /// [`SceneError::Spline`] when a construction rejects its input, [`SceneError::Field`] for
-    /// bad `params`, [`SceneError::NotImplemented`] for a method not in this build; in a
+    /// bad `params`; in a
     /// multi-curve scene the message is prefixed with `curves[i]`.
     pub fn build(&self) -> Result<Vec<BuiltCurve>, SceneError> {
         self.curves
@@ -1032,6 +1014,75 @@ fn build_any<P: ScenePoint>(
             let controls = curve.controls().to_vec();
             Built::new(curve, points).with_controls(controls)
         }
+        Method::Beta => {
+            no_knots(spec)?;
+            let shape = |params: &mut Params<'_>, name: &'static str, default: f64| {
+                Ok::<_, SceneError>(match params.get(name) {
+                    None => ShapeParam::Constant(default),
+                    Some(Value::Array(a)) => ShapeParam::PerPoint(
+                        a.iter()
+                            .enumerate()
+                            .map(|(i, v)| {
+                                v.as_f64().ok_or_else(|| {
+                                    field_error(format!("params.{name}[{i}]"), "must be a number")
+                                })
+                            })
+                            .collect::<Result<_, _>>()?,
+                    ),
+                    Some(v) => ShapeParam::Constant(v.as_f64().ok_or_else(|| {
+                        field_error(
+                            format!("params.{name}"),
+                            "must be a number or a list of numbers",
+                        )
+                    })?),
+                })
+            };
+            let positive = |params: &mut Params<'_>, name: &'static str| match params.get(name) {
+                None => Ok(None),
+                Some(v) => v
+                    .as_f64()
+                    .filter(|x| x.is_finite() && *x > 0.0)
+                    .map(Some)
+                    .ok_or_else(|| {
+                        field_error(format!("params.{name}"), "must be a positive number")
+                    }),
+            };
+            let beta = BetaParams {
+                beta1: shape(&mut params, "beta1", 1.0)?,
+                beta2: shape(&mut params, "beta2", 0.0)?,
+                interpolate: params.boolean("interpolate", true)?,
+                solver: BetaSolver::from_name(params.choice("solver", &["newton", "jacobi"])?)
+                    .unwrap_or_default(),
+                tolerance: positive(&mut params, "tolerance")?,
+                residual_tolerance: positive(&mut params, "residual_tolerance")?,
+                max_iterations: match params.get("max_iterations") {
+                    None => None,
+                    Some(v) => Some(
+                        v.as_u64()
+                            .filter(|n| (1..=1_000_000).contains(n))
+                            .and_then(|n| usize::try_from(n).ok())
+                            .ok_or_else(|| {
+                                field_error(
+                                    "params.max_iterations",
+                                    "must be a whole number from 1 to 1000000",
+                                )
+                            })?,
+                    ),
+                },
+            };
+            params.finish()?;
+            let curve = BetaSpline::try_new(points.clone(), &beta)?;
+            let mut built =
+                Built::new(curve.clone(), points).with_controls(curve.controls().to_vec());
+            built.auxiliary = curve.auxiliary().to_vec();
+            if let Some(info) = curve.solve_info() {
+                built = built
+                    .with_info("solver", json!(info.solver.name()))
+                    .with_info("iterations", json!(info.iterations))
+                    .with_info("residual", json!(info.residual));
+            }
+            built
+        }
         Method::ArcBlend => {
             let order = params.order()?;
             params.finish()?;
@@ -1049,7 +1100,13 @@ fn build_any<P: ScenePoint>(
             let knots = curve.knots().to_vec();
             Built::new(curve, points).with_info("knots", json!(knots))
         }
-        m => return Err(SceneError::NotImplemented(m)),
+        // Unreachable: `CurveSpec::validate` checks the method's spaces.
+        m => {
+            return Err(field_error(
+                "method",
+                format!("\"{}\" is not available on this sphere", m.id()),
+            ));
+        }
     })
 }
 
