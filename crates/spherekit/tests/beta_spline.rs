@@ -3,11 +3,14 @@
 
 //! Tests of the spherical Beta spline and its interpolation solvers (spec §9, §10.2, §11.6).
 
+mod support;
+
 use spherekit::glam::{DVec3, DVec4};
 use spherekit::{
     Ambient, BetaParams, BetaSolver, BetaSpline, Curve, Manifold, S2Point, Side, SnPoint,
     SolveError, SplineError, UnitQuat,
 };
+use support::Rng;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers
@@ -53,32 +56,6 @@ fn with_beta1(beta1: Vec<f64>) -> BetaParams {
 
 fn close3(a: S2Point, b: [f64; 3], tol: f64) -> bool {
     (a.as_dvec3() - DVec3::from_array(b)).abs().max_element() <= tol
-}
-
-/// A deterministic generator (`SplitMix64`).
-struct Rng(u64);
-
-impl Rng {
-    fn f64(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.f64()
-    }
-    fn normal(&mut self) -> f64 {
-        let (u, v) = (self.f64().max(1e-300), self.f64());
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-    }
-    fn unit(&mut self, dim: usize) -> Vec<f64> {
-        let v: Vec<f64> = (0..dim).map(|_| self.normal()).collect();
-        let l = v.iter().map(|a| a * a).sum::<f64>().sqrt();
-        v.into_iter().map(|a| a / l).collect()
-    }
 }
 
 /// A random walk of `n + 1` points on S^(dim−1) with steps of `lo..hi` radians.
@@ -1086,7 +1063,7 @@ fn random_configurations_are_finite_or_typed_errors() {
                 .into(),
             beta2: (0..=n)
                 .map(|_| {
-                    if rng.f64() < 0.5 {
+                    if rng.uniform() < 0.5 {
                         0.0
                     } else {
                         10f64.powf(rng.range(-3.0, 3.0))

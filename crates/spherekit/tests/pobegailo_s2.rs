@@ -11,16 +11,16 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod pobegailo_common;
+mod support;
 
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_8, PI};
 
-use pobegailo_common::{Rng, check_continuity, check_derivatives};
 use spherekit::glam::{DMat3, DVec3};
 use spherekit::{
     ArcBlend, CircleArc, CornerBlend, Curve, GroupJet, Manifold, S2Point, Side,
     SmoothingPolynomials, SplineError,
 };
+use support::{Rng, check_continuity, check_derivatives};
 
 fn p(x: f64, y: f64, z: f64) -> S2Point {
     S2Point::try_new(DVec3::new(x, y, z)).unwrap()

@@ -11,16 +11,16 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod pobegailo_common;
+mod support;
 
 use core::f64::consts::PI;
 
-use pobegailo_common::{Rng, check_continuity, check_derivatives};
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     ArcBlend, CircleArc, CornerBlend, CornerBlendS3, Curve, Manifold, Side, SmoothingPolynomials,
     SplineError, UnitQuat, angular_velocity_acceleration,
 };
+use support::{Rng, check_continuity, check_derivatives};
 
 fn q(w: f64, x: f64, y: f64, z: f64) -> UnitQuat {
     UnitQuat::from_wxyz([w, x, y, z]).unwrap()
