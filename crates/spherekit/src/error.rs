@@ -129,7 +129,7 @@ impl fmt::Display for SplineError {
             Self::KnotCount { expected, got } => {
                 write!(f, "knots: expected {expected} knots, got {got}")
             }
-            Self::InvalidParameter { name, reason } => write!(f, "params.{name} {reason}"),
+            Self::InvalidParameter { name, reason } => write!(f, "params.{name}: {reason}"),
             Self::NoCircle { index } => write!(
                 f,
                 "points[{index}] and points[{}] coincide: no unique circle passes through points[{index}], points[{}] and points[{}]",

@@ -848,6 +848,12 @@ fn points<P: ScenePoint>(raw: &[Vec<f64>]) -> Result<Vec<P>, SceneError> {
         .collect()
 }
 
+/// A parameter given as one number for every point or joint, or as a list.
+enum NumberOrList {
+    One(f64),
+    List(Vec<f64>),
+}
+
 /// Typed access to a method's `params`; unknown keys are an error.
 struct Params<'a> {
     method: Method,
@@ -883,43 +889,30 @@ impl<'a> Params<'a> {
         }
     }
 
-    /// One number for every entry, or a list of exactly `len` numbers.
-    fn numbers(
-        &mut self,
-        name: &'static str,
-        default: f64,
-        len: usize,
-    ) -> Result<Vec<f64>, SceneError> {
+    /// A number, a list of numbers, or absent (`None`). Ranges and list lengths are checked by
+    /// the construction, which knows them.
+    fn number_or_list(&mut self, name: &'static str) -> Result<Option<NumberOrList>, SceneError> {
         match self.get(name) {
-            None => Ok(vec![default; len]),
-            Some(Value::Array(a)) => {
-                if a.len() != len {
-                    return Err(field_error(
-                        format!("params.{name}"),
-                        format!(
-                            "must be one number or a list of {len}, got a list of {}",
-                            a.len()
-                        ),
-                    ));
-                }
-                a.iter()
-                    .enumerate()
-                    .map(|(i, v)| {
-                        v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
-                            field_error(format!("params.{name}[{i}]"), "must be a finite number")
-                        })
+            None => Ok(None),
+            Some(Value::Array(a)) => a
+                .iter()
+                .enumerate()
+                .map(|(i, v)| {
+                    v.as_f64().ok_or_else(|| {
+                        field_error(format!("params.{name}[{i}]"), "must be a number")
                     })
-                    .collect()
-            }
-            Some(v) => {
-                let x = v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                })
+                .collect::<Result<_, _>>()
+                .map(|list| Some(NumberOrList::List(list))),
+            Some(v) => v
+                .as_f64()
+                .map(|x| Some(NumberOrList::One(x)))
+                .ok_or_else(|| {
                     field_error(
                         format!("params.{name}"),
-                        "must be a finite number or a list",
+                        "must be a number or a list of numbers",
                     )
-                })?;
-                Ok(vec![x; len])
-            }
+                }),
         }
     }
 
@@ -1017,24 +1010,10 @@ fn build_any<P: ScenePoint>(
         Method::Beta => {
             no_knots(spec)?;
             let shape = |params: &mut Params<'_>, name: &'static str, default: f64| {
-                Ok::<_, SceneError>(match params.get(name) {
+                Ok::<_, SceneError>(match params.number_or_list(name)? {
                     None => ShapeParam::Constant(default),
-                    Some(Value::Array(a)) => ShapeParam::PerPoint(
-                        a.iter()
-                            .enumerate()
-                            .map(|(i, v)| {
-                                v.as_f64().ok_or_else(|| {
-                                    field_error(format!("params.{name}[{i}]"), "must be a number")
-                                })
-                            })
-                            .collect::<Result<_, _>>()?,
-                    ),
-                    Some(v) => ShapeParam::Constant(v.as_f64().ok_or_else(|| {
-                        field_error(
-                            format!("params.{name}"),
-                            "must be a number or a list of numbers",
-                        )
-                    })?),
+                    Some(NumberOrList::One(x)) => ShapeParam::Constant(x),
+                    Some(NumberOrList::List(v)) => ShapeParam::PerPoint(v),
                 })
             };
             let positive = |params: &mut Params<'_>, name: &'static str| match params.get(name) {
@@ -1146,21 +1125,10 @@ fn build_s3(
             Built::new(curve, keys).with_controls(controls)
         }
         Method::Gamma => {
-            let gamma = match params.get("gamma") {
+            let gamma = match params.number_or_list("gamma")? {
                 None => Gammas::All(1.0),
-                Some(Value::Array(a)) => Gammas::Each(
-                    a.iter()
-                        .enumerate()
-                        .map(|(i, v)| {
-                            v.as_f64().ok_or_else(|| {
-                                field_error(format!("params.gamma[{i}]"), "must be a number")
-                            })
-                        })
-                        .collect::<Result<_, _>>()?,
-                ),
-                Some(v) => Gammas::All(v.as_f64().ok_or_else(|| {
-                    field_error("params.gamma", "must be a number or a list of numbers")
-                })?),
+                Some(NumberOrList::One(x)) => Gammas::All(x),
+                Some(NumberOrList::List(v)) => Gammas::Each(v),
             };
             let last_edge =
                 LastEdge::from_name(params.choice("last_edge", &["formula", "paper-example"])?)?;
