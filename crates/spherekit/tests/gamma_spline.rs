@@ -470,7 +470,7 @@ fn bad_input_is_a_typed_error() {
             matches!(e, SplineError::InvalidParameter { name: "gamma", .. }),
             "{g:?}: {e}"
         );
-        assert!(e.to_string().starts_with("params.gamma "), "{e}");
+        assert!(e.to_string().starts_with("params.gamma: "), "{e}");
     }
     // A scalar γ is validated even when there are no interior knots.
     assert!(matches!(
