@@ -25,6 +25,27 @@
 //! assert!((omega - DVec3::Z).length() < 1e-14);
 //! ```
 //!
+//! # Curves
+//!
+//! | type | spheres | construction | continuity |
+//! |---|---|---|---|
+//! | [`GeodesicSpline`] | all | piecewise slerp through the points | C⁰ |
+//! | [`NlerpSpline`] | all | piecewise normalised linear interpolation | C⁰ |
+//! | [`Bezier`] | all | spherical Bézier of any degree by de Casteljau (Shoemake 1985) | C^∞ |
+//! | [`KimBezier`] | S³ | Kim–Kim–Shin cumulative Bézier quaternion curve (1995) | C^∞ |
+//! | [`KimBSpline`] | S³ | Kim–Kim–Shin cumulative cubic B-spline quaternion curve | C² |
+//! | [`Squad`] | S³ | Shoemake's squad, non-uniform knots | C¹ |
+//! | [`CatmullRom`] | all | Catmull-Rom by slerps (textbook rule on S³, intrinsic on S^m) | C¹ |
+//! | [`GammaSpline`] | S³ | Boehm's Gamma spline lifted to S³ with Kim's cubic segments | C¹ |
+//! | [`BetaSpline`] | all | spherical Beta spline (bias β₁, tension β₂) with a Newton interpolation solver | G¹ |
+//! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
+//! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline | Cⁿ |
+//!
+//! Each type's documentation gives the formula, its source (the seed papers and the
+//! specification distilled from them) and the corrections the sources needed. The
+//! [`continuity`] report measures the jumps of a curve's point, velocity and acceleration at
+//! its joints from the exact one-sided jets.
+//!
 //! # Conventions
 //!
 //! - Angles are in radians. Distances on a sphere are great-circle angles in `[0, π]`; on S³
