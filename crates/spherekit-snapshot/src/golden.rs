@@ -222,6 +222,12 @@ fn bless(reference: &Path, png: &[u8]) -> Result<(), GoldenError> {
     if std::env::var_os("CI").is_some() {
         return Err(GoldenError::BlessInCi);
     }
+    if png.len() > MAX_PNG_BYTES {
+        return Err(GoldenError::TooLarge {
+            name: stem(reference),
+            bytes: png.len(),
+        });
+    }
     if reference.exists() {
         let old = reference.with_extension("old.png");
         std::fs::rename(reference, &old).map_err(|e| GoldenError::Io(e.to_string()))?;
