@@ -101,6 +101,25 @@ impl<P: Manifold> Curve for Bezier<P> {
     fn eval(&self, t: f64) -> P {
         de_casteljau(&self.ctrl, clamp_param(t, [0.0, 1.0]))
     }
+
+    /// One scratch buffer per batch (the de Casteljau levels), none per sample.
+    fn eval_many(&self, ts: &[f64], out: &mut [P]) {
+        crate::knots::check_batch(ts, out);
+        let mut level = Vec::with_capacity(self.ctrl.len());
+        for (&t, o) in ts.iter().zip(out) {
+            *o = de_casteljau_in(&self.ctrl, clamp_param(t, [0.0, 1.0]), &mut level);
+        }
+    }
+
+    /// One scratch buffer per batch (the de Casteljau levels), none per sample.
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<P>]) {
+        crate::knots::check_batch(ts, out);
+        let mut level = Vec::with_capacity(self.ctrl.len());
+        for (&t, o) in ts.iter().zip(out) {
+            let t = clamp_param(t, [0.0, 1.0]);
+            *o = de_casteljau_jet_in(&self.ctrl, ScalarJet::param(t, 1.0), &mut level);
+        }
+    }
 }
 
 /// The point `Q[p₀ … pₙ](s)` of the spherical Bézier curve with control points `ctrl` (de
@@ -111,6 +130,11 @@ impl<P: Manifold> Curve for Bezier<P> {
 /// If `ctrl` is empty.
 #[must_use]
 pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
+    de_casteljau_in(ctrl, s, &mut Vec::new())
+}
+
+/// [`de_casteljau`] with the levels in a caller's scratch buffer (batch evaluation reuses it).
+fn de_casteljau_in<P: Manifold>(ctrl: &[P], s: f64, level: &mut Vec<P>) -> P {
     assert!(!ctrl.is_empty(), "de Casteljau needs a control point");
     if s == 0.0 {
         return ctrl[0].clone();
@@ -118,7 +142,8 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
     if s == 1.0 {
         return ctrl[ctrl.len() - 1].clone();
     }
-    let mut level = ctrl.to_vec();
+    level.clear();
+    level.extend_from_slice(ctrl);
     for n in (1..ctrl.len()).rev() {
         for i in 0..n {
             let next = level[i]
@@ -127,7 +152,7 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
             level[i] = next;
         }
     }
-    level.swap_remove(0)
+    level[0].clone()
 }
 
 /// The point and exact first and second derivatives of the spherical Bézier curve with control
@@ -141,15 +166,23 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
 /// If `ctrl` is empty.
 #[must_use]
 pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
+    de_casteljau_jet_in(ctrl, s, &mut Vec::new())
+}
+
+/// [`de_casteljau_jet`] with the levels in a caller's scratch buffer.
+fn de_casteljau_jet_in<P: Manifold>(
+    ctrl: &[P],
+    s: ScalarJet,
+    level: &mut Vec<VJet<P::Vector>>,
+) -> Jet<P> {
     assert!(!ctrl.is_empty(), "de Casteljau needs a control point");
     // The first level has fixed endpoints: plain arcs.
-    let mut level: Vec<VJet<P::Vector>> = if ctrl.len() == 1 {
-        vec![VJet::constant(ctrl[0].to_vector())]
+    level.clear();
+    if ctrl.len() == 1 {
+        level.push(VJet::constant(ctrl[0].to_vector()));
     } else {
-        ctrl.windows(2)
-            .map(|w| first_level(&w[0], &w[1], s))
-            .collect()
-    };
+        level.extend(ctrl.windows(2).map(|w| first_level(&w[0], &w[1], s)));
+    }
     for n in (1..ctrl.len().saturating_sub(1)).rev() {
         for i in 0..n {
             let next =
@@ -157,7 +190,7 @@ pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
             level[i] = next;
         }
     }
-    let mut top = level.swap_remove(0);
+    let mut top = level[0].clone();
     if s.value == 0.0 {
         top.v = ctrl[0].to_vector();
     } else if s.value == 1.0 {

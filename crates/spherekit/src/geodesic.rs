@@ -122,6 +122,27 @@ impl<P: Manifold> Curve for GeodesicSpline<P> {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval(&self, t: f64) -> P {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        self.eval_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl<P: Manifold> GeodesicSpline<P> {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
         let arc = &self.arcs[i];
         let point = if s == 1.0 {
             self.points[i + 1].clone()
@@ -138,8 +159,7 @@ impl<P: Manifold> Curve for GeodesicSpline<P> {
         }
     }
 
-    fn eval(&self, t: f64) -> P {
-        let (i, s) = self.knots.locate(t, Side::Right);
+    fn eval_local(&self, i: usize, s: f64) -> P {
         if s == 1.0 {
             return self.points[i + 1].clone();
         }
@@ -210,6 +230,22 @@ impl<P: Manifold> Curve for NlerpSpline<P> {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s).point);
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl<P: Manifold> NlerpSpline<P> {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
         let (a, b) = (self.points[i].to_vector(), self.points[i + 1].to_vector());
         let v = a.clone() * (1.0 - s) + b.clone() * s;
         let dv = (b - a) * (1.0 / self.knots.width(i));

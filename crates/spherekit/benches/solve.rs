@@ -1,0 +1,47 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The interpolation solvers of the spherical Beta spline on S²: Newton to a residual of
+//! 1e-12 and the paper's Jacobi iteration to 1e-10, for n = 10, 1 000 and 100 000 random points
+//! whose neighbours are 10°–60° apart.
+//!
+//! `cargo bench -p spherekit --bench solve`. Jacobi at n = 100 000 is skipped unless
+//! `SPHEREKIT_BENCH_JACOBI_100K=1` (it takes minutes per solve; see BENCHMARKS.md).
+
+#![allow(missing_docs, reason = "criterion macros")]
+
+#[path = "data.rs"]
+mod data;
+
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use spherekit::{BetaParams, BetaSolver, BetaSpline};
+
+fn solvers(c: &mut Criterion) {
+    let mut group = c.benchmark_group("beta solve");
+    group.sample_size(10);
+    let jacobi_100k = std::env::var_os("SPHEREKIT_BENCH_JACOBI_100K").is_some();
+    for n in [10, 1000, 100_000] {
+        let points = data::points_s2(n, 60.0, 1);
+        group.throughput(Throughput::Elements(n as u64));
+        let newton = BetaParams::default();
+        group.bench_with_input(BenchmarkId::new("newton 1e-12", n), &points, |b, p| {
+            b.iter(|| BetaSpline::try_new(black_box(p.clone()), &newton).expect("newton"));
+        });
+        if n < 100_000 || jacobi_100k {
+            let jacobi = BetaParams {
+                solver: BetaSolver::Jacobi,
+                residual_tolerance: Some(1e-10),
+                ..BetaParams::default()
+            };
+            group.bench_with_input(BenchmarkId::new("jacobi 1e-10", n), &points, |b, p| {
+                b.iter(|| BetaSpline::try_new(black_box(p.clone()), &jacobi).expect("jacobi"));
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, solvers);
+criterion_main!(benches);
