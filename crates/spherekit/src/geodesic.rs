@@ -7,7 +7,7 @@ use crate::ambient::Ambient;
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::knots::Knots;
-use crate::manifold::{Manifold, geodesic_frame};
+use crate::manifold::{Manifold, geodesic_frame, renormalize};
 
 /// Checks that there are at least `min` points and no antipodal neighbours.
 pub(crate) fn check_chain<P: Manifold>(points: &[P], min: usize) -> Result<(), SplineError> {
@@ -144,12 +144,18 @@ impl<P: Manifold> Curve for GeodesicSpline<P> {
 impl<P: Manifold> GeodesicSpline<P> {
     fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
         let arc = &self.arcs[i];
+        // `slerp(pᵢ, pᵢ₊₁, s)` from the precomputed frame: the same operations, bit for bit,
+        // without recomputing the frame, and one `sin_cos` for the point and the velocity.
+        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
         let point = if s == 1.0 {
             self.points[i + 1].clone()
+        } else if s == 0.0 {
+            self.points[i].clone()
         } else {
-            self.points[i].slerp(&self.points[i + 1], s)
+            P::from_vector_unchecked(renormalize(
+                arc.start.clone() * cs + arc.direction.clone() * sn,
+            ))
         };
-        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
         let velocity = (arc.direction.clone() * cs - arc.start.clone() * sn) * arc.rate;
         let acceleration = point.to_vector() * -(arc.rate * arc.rate);
         Jet {
@@ -159,11 +165,20 @@ impl<P: Manifold> GeodesicSpline<P> {
         }
     }
 
+    /// `slerp(pᵢ, pᵢ₊₁, s)` from the precomputed frame (bit for bit the same as
+    /// [`Manifold::try_slerp`], which computes this frame and then this combination).
     fn eval_local(&self, i: usize, s: f64) -> P {
         if s == 1.0 {
             return self.points[i + 1].clone();
         }
-        self.points[i].slerp(&self.points[i + 1], s)
+        if s == 0.0 {
+            return self.points[i].clone();
+        }
+        let arc = &self.arcs[i];
+        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
+        P::from_vector_unchecked(renormalize(
+            arc.start.clone() * cs + arc.direction.clone() * sn,
+        ))
     }
 }
 

@@ -243,3 +243,25 @@ fn mismatched_buffer_panics() {
     let mut out = vec![UnitQuat::IDENTITY; 2];
     c.eval_many(&[0.0, 1.0, 2.0], &mut out);
 }
+
+/// The geodesic spline evaluates slerp from a precomputed frame: still slerp, bit for bit.
+#[test]
+fn geodesic_is_slerp_bit_for_bit() {
+    let q = data::keys_s3(20);
+    let c = GeodesicSpline::try_new(q.clone(), None).unwrap();
+    let knots = spherekit::Knots::uniform(20);
+    for t in data::params(c.domain(), 5003) {
+        let (i, s) = knots.locate(t, spherekit::Side::Right);
+        let expected = q[i].slerp(&q[i + 1], s);
+        assert_eq!(
+            c.eval(t).to_vector().bits(),
+            expected.to_vector().bits(),
+            "t = {t}"
+        );
+        assert_eq!(
+            c.jet(t).point.to_vector().bits(),
+            expected.to_vector().bits(),
+            "t = {t}"
+        );
+    }
+}
