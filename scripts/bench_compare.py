@@ -113,7 +113,6 @@ def main():
     # splines (pure Python), on SLOW_SAMPLES parameters.
     uq = [sq.UnitQuaternion.from_unit_xyzw(v) for v in xyzw]
     ts_slow = params(methods["geodesic"]["domain"], SLOW_SAMPLES)
-    sub = every * n // SLOW_SAMPLES  # not used for comparisons: different parameters
 
     def per_sample(curve, tt):
         t, out = best(lambda: [curve.evaluate(x) for x in tt], reps=3)
@@ -125,8 +124,9 @@ def main():
     pw = sq.PiecewiseSlerp(uq, grid=list(times))
     t, out = per_sample(pw, ts_slow)
     peers.append(("splines PiecewiseSlerp", "geodesic", t, None, f"{SLOW_SAMPLES} samples"))
-    t, _ = per_sample(sq.Squad(uq, grid=list(times)), ts_slow)
-    peers.append(("splines Squad", "squad", t, None, f"{SLOW_SAMPLES} samples"))
+    closed_grid = [*times, times[-1] + 1.0]  # splines' Squad is always a closed curve
+    t, _ = per_sample(sq.Squad(uq, grid=closed_grid), ts_slow)
+    peers.append(("splines Squad", "squad", t, None, f"{SLOW_SAMPLES} samples; closed curve"))
     t, _ = per_sample(sq.CatmullRom(uq, grid=list(times)), ts_slow)
     peers.append(("splines CatmullRom", "catmull-rom", t, None, f"{SLOW_SAMPLES} samples"))
     # The cubic Bezier of the first 4 keys on [0, 1]: the same de Casteljau curve.

@@ -265,3 +265,23 @@ fn geodesic_is_slerp_bit_for_bit() {
         );
     }
 }
+
+/// `Bezier` evaluates its first de Casteljau level from precomputed arcs: still
+/// `de_casteljau` and `de_casteljau_jet`, bit for bit.
+#[test]
+fn bezier_is_de_casteljau_bit_for_bit() {
+    let q = data::keys_s3(7);
+    for ctrl in [q[..2].to_vec(), q[..4].to_vec(), q.clone()] {
+        let c = Bezier::try_new(ctrl.clone()).unwrap();
+        for t in data::params([0.0, 1.0], 1001).into_iter().chain([0.0, 1.0]) {
+            let p = spherekit::de_casteljau(&ctrl, t);
+            let j = spherekit::de_casteljau_jet(&ctrl, spherekit::ScalarJet::param(t, 1.0));
+            assert_eq!(
+                c.eval(t).to_vector().bits(),
+                p.to_vector().bits(),
+                "t = {t}"
+            );
+            assert_eq!(jet_bits(&c.jet(t)), jet_bits(&j), "t = {t}");
+        }
+    }
+}
