@@ -5,8 +5,9 @@
 //! 1e-12 and the paper's Jacobi iteration to 1e-10, for n = 10, 1 000 and 100 000 random points
 //! whose neighbours are 10°–60° apart.
 //!
-//! `cargo bench -p spherekit --bench solve`. Jacobi at n = 100 000 is skipped unless
-//! `SPHEREKIT_BENCH_JACOBI_100K=1` (it takes minutes per solve; see BENCHMARKS.md).
+//! `cargo bench -p spherekit --bench solve`. Each solver's iterations and final residual are
+//! printed once per size before it is timed. `SPHEREKIT_BENCH_SKIP_JACOBI_100K=1` skips Jacobi
+//! at n = 100 000 (seconds per solve).
 
 #![allow(missing_docs, reason = "criterion macros")]
 
@@ -21,11 +22,12 @@ use spherekit::{BetaParams, BetaSolver, BetaSpline};
 fn solvers(c: &mut Criterion) {
     let mut group = c.benchmark_group("beta solve");
     group.sample_size(10);
-    let jacobi_100k = std::env::var_os("SPHEREKIT_BENCH_JACOBI_100K").is_some();
+    let jacobi_100k = std::env::var_os("SPHEREKIT_BENCH_SKIP_JACOBI_100K").is_none();
     for n in [10, 1000, 100_000] {
         let points = data::points_s2(n, 60.0, 1);
         group.throughput(Throughput::Elements(n as u64));
         let newton = BetaParams::default();
+        report("newton", n, &points, &newton);
         group.bench_with_input(BenchmarkId::new("newton 1e-12", n), &points, |b, p| {
             b.iter(|| BetaSpline::try_new(black_box(p.clone()), &newton).expect("newton"));
         });
@@ -35,12 +37,25 @@ fn solvers(c: &mut Criterion) {
                 residual_tolerance: Some(1e-10),
                 ..BetaParams::default()
             };
+            report("jacobi", n, &points, &jacobi);
             group.bench_with_input(BenchmarkId::new("jacobi 1e-10", n), &points, |b, p| {
                 b.iter(|| BetaSpline::try_new(black_box(p.clone()), &jacobi).expect("jacobi"));
             });
         }
     }
     group.finish();
+}
+
+/// Prints the solver's iterations, residual and the wall time of one solve.
+fn report(name: &str, n: usize, points: &[spherekit::S2Point], params: &BetaParams) {
+    let start = std::time::Instant::now();
+    let c = BetaSpline::try_new(points.to_vec(), params).expect("solves");
+    let time = start.elapsed().as_secs_f64() * 1e3;
+    let info = c.solve_info().expect("interpolating");
+    println!(
+        "{name} n = {n}: {} iterations, residual {:.1e} rad, one solve {time:.2} ms",
+        info.iterations, info.residual
+    );
 }
 
 criterion_group!(benches, solvers);

@@ -72,6 +72,27 @@ pub trait Curve: core::fmt::Debug {
     /// # Panics
     ///
     /// If `out.len() != ts.len()`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{Curve, Jet, Squad, UnitQuat};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let keys: Vec<UnitQuat> = (0..5)
+    ///     .map(|i| UnitQuat::from_axis_angle(DVec3::new(1.0, f64::from(i), 2.0), 0.3 * f64::from(i)).unwrap())
+    ///     .collect();
+    /// let c = Squad::try_new(keys, None).unwrap();
+    /// let ts: Vec<f64> = (0..=400).map(|k| f64::from(k) / 100.0).collect();
+    /// let mut points = vec![UnitQuat::IDENTITY; ts.len()];
+    /// c.eval_many(&ts, &mut points);
+    /// let mut jets: Vec<Jet<UnitQuat>> = vec![c.jet(0.0); ts.len()];
+    /// c.jet_many(&ts, &mut jets);
+    /// for (k, &t) in ts.iter().enumerate() {
+    ///     assert_eq!(points[k], c.eval(t)); // bit for bit
+    ///     assert_eq!(jets[k], c.jet(t));
+    /// }
+    /// ```
     fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
         crate::knots::check_batch(ts, out);
         for (&t, o) in ts.iter().zip(out) {
