@@ -3,8 +3,8 @@
 
 //! Batch evaluation allocates nothing per sample (S² and S³ curves), counted by a global
 //! allocator: at most one scratch buffer per call (the de Casteljau levels of `Bezier`), none
-//! for every other method. One test in this binary, so that no other test allocates
-//! concurrently.
+//! for every other method; and every curve keeps O(number of keys) memory. A test without the
+//! libtest harness (`harness = false`): no other thread allocates while it counts.
 
 #![allow(
     clippy::unwrap_used,
@@ -41,7 +41,12 @@ fn allocations<P: Manifold>(c: &dyn Curve<Point = P>) -> usize {
     region.change().allocations + region.change().reallocations
 }
 
-#[test]
+fn main() {
+    batch_evaluation_allocates_nothing();
+    memory_is_linear_in_keys();
+    println!("batch_alloc: ok");
+}
+
 fn batch_evaluation_allocates_nothing() {
     let p = data::points_s2(20, 60.0, 3);
     let q = data::keys_s3(20);
@@ -132,4 +137,72 @@ fn batch_evaluation_allocates_nothing() {
         failures.is_empty(),
         "allocations in batch evaluation: {failures:?}"
     );
+}
+
+/// Bytes a curve keeps (allocated and not freed by construction, beyond the moved-in keys).
+fn retained(build: &dyn Fn(Vec<UnitQuat>) -> Boxed<UnitQuat>, n: usize) -> isize {
+    let keys = data::keys_s3(n);
+    let region = Region::new(GLOBAL);
+    let curve = build(keys);
+    let change = region.change();
+    drop(curve);
+    isize::try_from(change.bytes_allocated).unwrap()
+        - isize::try_from(change.bytes_deallocated).unwrap()
+        + change.bytes_reallocated
+}
+
+/// Memory kept by each curve through 1 000 keys is at most ~10× that through 100 keys.
+fn memory_is_linear_in_keys() {
+    type Build = Box<dyn Fn(Vec<UnitQuat>) -> Boxed<UnitQuat>>;
+    let methods: Vec<(&str, Build)> = vec![
+        (
+            "geodesic",
+            Box::new(|k| Box::new(GeodesicSpline::try_new(k, None).unwrap())),
+        ),
+        (
+            "nlerp",
+            Box::new(|k| Box::new(NlerpSpline::try_new(k, None).unwrap())),
+        ),
+        (
+            "squad",
+            Box::new(|k| Box::new(Squad::try_new(k, None).unwrap())),
+        ),
+        (
+            "catmull-rom",
+            Box::new(|k| Box::new(CatmullRom::try_new(k, None).unwrap())),
+        ),
+        (
+            "bspline-kim",
+            Box::new(|k| Box::new(KimBSpline::try_new(k).unwrap())),
+        ),
+        (
+            "gamma",
+            Box::new(|k| {
+                Box::new(
+                    GammaSpline::try_new(k, None, Gammas::All(1.0), LastEdge::Formula).unwrap(),
+                )
+            }),
+        ),
+        (
+            "beta",
+            Box::new(|k| Box::new(BetaSpline::try_new(k, &BetaParams::default()).unwrap())),
+        ),
+        (
+            "arc-blend",
+            Box::new(|k| Box::new(ArcBlend::try_new(k, 2).unwrap())),
+        ),
+        (
+            "corner-blend",
+            Box::new(|k| Box::new(CornerBlendS3::try_new(k, 2, DEFAULT_CORNER_FRACTION).unwrap())),
+        ),
+    ];
+    for (name, build) in &methods {
+        let small = retained(build.as_ref(), 100);
+        let large = retained(build.as_ref(), 1000);
+        println!("{name}: keeps {small} bytes for 100 keys, {large} for 1000");
+        assert!(
+            small > 0 && large <= 11 * small,
+            "{name}: {small} bytes for 100 keys, {large} for 1000 keys"
+        );
+    }
 }
