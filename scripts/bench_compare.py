@@ -4,7 +4,7 @@
 """Times spherekit against its peers in one run and writes BENCHMARKS.md's comparison table.
 
 Run with `just bench-compare` (it makes .venv/ with the pinned peers). The Rust side is the
-`bench_json` example (the criterion benches' keys and parameters, best of 7 runs); the peers
+`bench_json` example (the criterion benches' keys and parameters, best of 21 runs); the peers
 run on the same keys and parameters: scipy (`Slerp`, `RotationSpline`), numpy-quaternion
 (`squad`, `slerp`) and splines (`splines.quaternion`, pure Python, timed on fewer samples).
 Where two libraries compute the same curve the largest difference is reported (quaternions
@@ -28,7 +28,7 @@ import splines.quaternion as sq
 from scipy.spatial.transform import RotationSpline, Rotation, Slerp
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-REPS = 7
+REPS = 11
 SLOW_SAMPLES = 2000  # pure-Python peers
 
 
@@ -157,7 +157,7 @@ def write(r, peers, build20, build1000, up0, up1):
     lines.append("")
     lines.append(
         f"20 keys on S³ (Bézier methods: one cubic, the first 4 keys), {r['samples']:,} increasing "
-        f"parameters, best of {REPS} runs. Floor: k slerps × glam `DQuat::slerp` "
+        f"parameters, best of 21 runs (peers: best of {REPS}). Floor: k slerps × glam `DQuat::slerp` "
         f"= k × {slerp:.1f} ns. Construction: one `try_new`."
     )
     lines.append("")

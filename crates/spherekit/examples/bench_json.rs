@@ -45,7 +45,7 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let samples: usize = args.next().map_or(200_000, |s| s.parse().unwrap());
     let count: usize = args.next().map_or(20, |s| s.parse().unwrap());
-    let reps = 7;
+    let reps = 21;
     let keys = data::keys_s3(count);
     let mut methods = Vec::new();
     let mut values = serde_json::Map::new();
