@@ -43,3 +43,14 @@ contact-sheet:
 # Render a scene to a PNG: just render SCENE OUT [SIZE]
 render scene out size="512":
     cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- render {{scene}} -o {{out}} --size {{size}}
+
+# Criterion benches of the core and the renderer (by hand; CI only compiles them)
+bench:
+    cargo bench -p spherekit -p spherekit-render
+
+# Time spherekit against scipy, numpy-quaternion and splines in one run; writes BENCHMARKS.md
+bench-compare:
+    test -x .venv/bin/python || python3 -m venv .venv
+    .venv/bin/pip install --quiet --disable-pip-version-check scipy==1.17.1 numpy==2.4.6 numpy-quaternion==2024.0.13 splines==0.3.3
+    cargo build --quiet --release -p spherekit --example bench_json
+    .venv/bin/python scripts/bench_compare.py

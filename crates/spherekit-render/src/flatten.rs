@@ -12,26 +12,28 @@ const MAX_DEPTH: u32 = 12;
 /// sphere closely enough to be split at the horizon.
 const MAX_STEP: f64 = 0.05;
 
-/// Flattens `f` on `[a, b]` into points on S², starting from `initial` equal pieces and
+/// Flattens a curve on `[a, b]` into points on S², starting from `initial` equal pieces and
 /// subdividing any piece whose midpoint deviates from the chord's great-circle midpoint by more
 /// than `accuracy` radians, or which spans more than [`MAX_STEP`].
+///
+/// `f(ts, out)` evaluates the curve at increasing parameters into `out` (batch evaluation,
+/// [`Curve::eval_many`](spherekit::Curve::eval_many)). The subdivision runs breadth first, one
+/// batch of midpoints per level, and gives the points of the depth-first recursion in the same
+/// order.
 ///
 /// The parameters in `breaks` (joints of a piecewise curve) are always sample points, so
 /// corners are kept sharp.
 pub(crate) fn flatten(
-    f: &dyn Fn(f64) -> DVec3,
+    f: &dyn Fn(&[f64], &mut [DVec3]),
     breaks: &[f64],
     initial: usize,
     accuracy: f64,
 ) -> Vec<DVec3> {
-    let mut out = Vec::new();
+    // The initial grid: each piece's start and `initial` steps to its end.
+    let mut ts = Vec::with_capacity(breaks.len().saturating_sub(1) * (initial + 1));
     for w in breaks.windows(2) {
         let (a, b) = (w[0], w[1]);
-        let mut prev_t = a;
-        let mut prev = f(a);
-        if out.is_empty() {
-            out.push(prev);
-        }
+        ts.push(a);
         for i in 1..=initial {
             #[expect(clippy::cast_precision_loss, reason = "small counts")]
             let t = if i == initial {
@@ -39,39 +41,87 @@ pub(crate) fn flatten(
             } else {
                 a + (b - a) * (i as f64 / initial as f64)
             };
-            let p = f(t);
-            subdivide(f, prev_t, prev, t, p, accuracy, 0, &mut out);
-            prev_t = t;
-            prev = p;
+            ts.push(t);
         }
     }
+    if ts.is_empty() {
+        return Vec::new();
+    }
+    let mut ps = vec![DVec3::ZERO; ts.len()];
+    f(&ts, &mut ps);
+    let mut pieces: Vec<Piece> = Vec::with_capacity(ts.len());
+    for (k, w) in ts.chunks(initial + 1).enumerate() {
+        let p = &ps[k * (initial + 1)..(k + 1) * (initial + 1)];
+        for i in 1..w.len() {
+            pieces.push(Piece {
+                ta: w[i - 1],
+                pa: p[i - 1],
+                tb: w[i],
+                pb: p[i],
+                done: false,
+            });
+        }
+    }
+    let mut mids = Vec::new();
+    let mut pm = Vec::new();
+    for _depth in 0..MAX_DEPTH {
+        mids.clear();
+        mids.extend(
+            pieces
+                .iter()
+                .filter(|q| !q.done)
+                .map(|q| 0.5 * (q.ta + q.tb)),
+        );
+        if mids.is_empty() {
+            break;
+        }
+        pm.clear();
+        pm.resize(mids.len(), DVec3::ZERO);
+        f(&mids, &mut pm);
+        let mut next = Vec::with_capacity(pieces.len() + mids.len());
+        let mut m = 0;
+        for q in pieces {
+            if q.done {
+                next.push(q);
+                continue;
+            }
+            let (tm, pmid) = (mids[m], pm[m]);
+            m += 1;
+            let chord_mid = (q.pa + q.pb).normalize_or_zero();
+            let deviation = (pmid - chord_mid).length();
+            let span = (q.pb - q.pa).length();
+            if deviation > accuracy || span > MAX_STEP {
+                next.push(Piece {
+                    tb: tm,
+                    pb: pmid,
+                    ..q
+                });
+                next.push(Piece {
+                    ta: tm,
+                    pa: pmid,
+                    ..q
+                });
+            } else {
+                next.push(Piece { done: true, ..q });
+            }
+        }
+        pieces = next;
+    }
+    let mut out = Vec::with_capacity(pieces.len() + 1);
+    out.push(ps[0]);
+    out.extend(pieces.iter().map(|q| q.pb));
     out
 }
 
-#[expect(clippy::too_many_arguments, reason = "a private recursive helper")]
-fn subdivide(
-    f: &dyn Fn(f64) -> DVec3,
+/// A piece of the polyline being subdivided: from `(ta, pa)` to `(tb, pb)`.
+#[derive(Clone, Copy)]
+struct Piece {
     ta: f64,
     pa: DVec3,
     tb: f64,
     pb: DVec3,
-    accuracy: f64,
-    depth: u32,
-    out: &mut Vec<DVec3>,
-) {
-    if depth < MAX_DEPTH {
-        let tm = 0.5 * (ta + tb);
-        let pm = f(tm);
-        let chord_mid = (pa + pb).normalize_or_zero();
-        let deviation = (pm - chord_mid).length();
-        let span = (pb - pa).length();
-        if deviation > accuracy || span > MAX_STEP {
-            subdivide(f, ta, pa, tm, pm, accuracy, depth + 1, out);
-            subdivide(f, tm, pm, tb, pb, accuracy, depth + 1, out);
-            return;
-        }
-    }
-    out.push(pb);
+    /// Accepted: no further subdivision.
+    done: bool,
 }
 
 /// Points along the great-circle arc from `a` to `b` (not antipodal), at most [`MAX_STEP`] apart.

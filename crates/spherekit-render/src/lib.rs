@@ -30,7 +30,7 @@ use core::fmt;
 
 use spherekit::glam::DVec3;
 use spherekit::scene::{Built, BuiltCurve, Method, Scene, SceneError, Space};
-use spherekit::{Ambient, Manifold, S2Point, Side, SnPoint, UnitQuat};
+use spherekit::{Ambient, Curve, Manifold, S2Point, Side, SnPoint, UnitQuat};
 use tiny_skia::{Color, Pixmap, Rect};
 
 use canvas::{Canvas, LineStyle, Rgb, Shape};
@@ -155,32 +155,17 @@ pub fn render_built(
                 draw_points(&mut canvas, b, color, polygon, &view, &|p: &S2Point| {
                     p.as_dvec3()
                 });
-                speed_series(
-                    b.curve.joints(),
-                    color,
-                    &|t, side| b.curve.jet_at(t, side).velocity.length(),
-                    size,
-                )
+                speed_series(&*b.curve, 1.0, color, size)
             }
             BuiltCurve::Sn(b) => {
                 let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
                 draw_points(&mut canvas, b, color, polygon, &view, &embed);
-                speed_series(
-                    b.curve.joints(),
-                    color,
-                    &|t, side| b.curve.jet_at(t, side).velocity.length(),
-                    size,
-                )
+                speed_series(&*b.curve, 1.0, color, size)
             }
             BuiltCurve::S3(b) => {
                 draw_rotations(&mut canvas, b, color, single, &view);
                 // |ω| = 2|q′| (the half-angle factor).
-                speed_series(
-                    b.curve.joints(),
-                    color,
-                    &|t, side| 2.0 * b.curve.jet_at(t, side).velocity.length(),
-                    size,
-                )
+                speed_series(&*b.curve, 2.0, color, size)
             }
         };
         series.push(s);
@@ -293,7 +278,13 @@ fn draw_points<P: Manifold>(
     view: &View,
     embed: &dyn Fn(&P) -> DVec3,
 ) {
-    let f = |t: f64| embed(&b.curve.eval(t));
+    let f = |ts: &[f64], out: &mut [DVec3]| {
+        let mut ps = vec![b.curve.eval(ts[0]); ts.len()];
+        b.curve.eval_many(ts, &mut ps);
+        for (o, p) in out.iter_mut().zip(&ps) {
+            *o = embed(p);
+        }
+    };
     let pts = flatten::flatten(&f, b.curve.joints(), 8, view.accuracy);
     let input: Vec<DVec3> = b.inputs.iter().map(embed).collect();
     let controls: Vec<DVec3> = b.controls.iter().map(embed).collect();
@@ -320,7 +311,13 @@ fn draw_rotations(canvas: &mut Canvas, b: &Built<UnitQuat>, color: Rgb, single: 
     for &k in &view.axes {
         let axis = [DVec3::X, DVec3::Y, DVec3::Z][k];
         let c = if single { AXIS_COLORS[k] } else { color };
-        let f = |t: f64| b.curve.eval(t).rotate(axis);
+        let f = |ts: &[f64], out: &mut [DVec3]| {
+            let mut qs = vec![UnitQuat::IDENTITY; ts.len()];
+            b.curve.eval_many(ts, &mut qs);
+            for (o, q) in out.iter_mut().zip(&qs) {
+                *o = q.rotate(axis);
+            }
+        };
         let pts = flatten::flatten(&f, b.curve.joints(), 8, view.accuracy);
         canvas.polyline(&pts, curve_style(c));
         for q in &b.controls {
@@ -359,16 +356,18 @@ fn draw_rotations(canvas: &mut Canvas, b: &Built<UnitQuat>, color: Rgb, single: 
 
 /// Samples the speed of one curve for the plot, piece by piece, with one-sided values at the
 /// joints, against its parameter mapped to [0, 1].
-fn speed_series(
-    joints: &[f64],
+fn speed_series<P: Manifold>(
+    curve: &dyn Curve<Point = P>,
+    factor: f64,
     color: Rgb,
-    speed: &dyn Fn(f64, Side) -> f64,
     size: u32,
 ) -> plot::SpeedSeries {
+    let joints = curve.joints();
     let [t0, t1] = [joints[0], joints[joints.len() - 1]];
     // The strip shows every curve over its whole domain, mapped to [0, 1].
     let unit = |t: f64| (t - t0) / (t1 - t0);
     let total = f64::from(size).max(64.0);
+    let finite = |v: f64| if v.is_finite() { v } else { 0.0 };
     let pieces = joints
         .windows(2)
         .map(|w| {
@@ -380,18 +379,21 @@ fn speed_series(
             let n = ((w[1] - w[0]) / (t1 - t0) * total)
                 .ceil()
                 .clamp(2.0, 4096.0) as usize;
-            (0..=n)
+            // Right-sided jets in one batch, then the piece's end from the left.
+            let ts: Vec<f64> = (0..n)
                 .map(|i| {
                     #[expect(clippy::cast_precision_loss, reason = "small counts")]
-                    let t = if i == n {
-                        w[1]
-                    } else {
-                        w[0] + (w[1] - w[0]) * (i as f64 / n as f64)
-                    };
-                    let side = if i == n { Side::Left } else { Side::Right };
-                    let v = speed(t, side);
-                    (unit(t), if v.is_finite() { v } else { 0.0 })
+                    let t = w[0] + (w[1] - w[0]) * (i as f64 / n as f64);
+                    t
                 })
+                .collect();
+            let mut jets = vec![curve.jet(w[0]); n];
+            curve.jet_many(&ts, &mut jets);
+            let end = factor * curve.jet_at(w[1], Side::Left).velocity.length();
+            ts.iter()
+                .zip(&jets)
+                .map(|(&t, j)| (unit(t), finite(factor * j.velocity.length())))
+                .chain(core::iter::once((unit(w[1]), finite(end))))
                 .collect()
         })
         .collect();

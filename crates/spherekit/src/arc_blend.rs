@@ -250,6 +250,27 @@ impl<P: Manifold> Curve for ArcBlend<P> {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval(&self, t: f64) -> P {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        self.eval_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl<P: Manifold> ArcBlend<P> {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
         let (p, velocity, acceleration) = self.segments[i].jet(self.poly, s);
         let point = if s == 0.0 {
             self.points[i].clone()
@@ -265,8 +286,7 @@ impl<P: Manifold> Curve for ArcBlend<P> {
         }
     }
 
-    fn eval(&self, t: f64) -> P {
-        let (i, s) = self.knots.locate(t, Side::Right);
+    fn eval_local(&self, i: usize, s: f64) -> P {
         if s == 0.0 {
             return self.points[i].clone();
         }

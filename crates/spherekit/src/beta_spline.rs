@@ -567,6 +567,22 @@ impl<P: Manifold> Curve for BetaSpline<P> {
         let (i, s) = self.locate(t, Side::Right);
         self.segments[i].eval(s)
     }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [P]) {
+        crate::knots::check_batch(ts, out);
+        for (&t, o) in ts.iter().zip(out) {
+            let (i, s) = self.locate(t, Side::Right);
+            *o = self.segments[i].eval(s);
+        }
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<P>]) {
+        crate::knots::check_batch(ts, out);
+        for (&t, o) in ts.iter().zip(out) {
+            let (i, s) = self.locate(t, Side::Right);
+            *o = self.segments[i].jet(ScalarJet::param(s, 1.0));
+        }
+    }
 }
 
 impl<P: Manifold> BetaSpline<P> {

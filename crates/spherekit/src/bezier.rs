@@ -52,6 +52,9 @@ use crate::slerp_jet::{FixedArc, ScalarJet, VJet, slerp_jet_vec, slerp_point};
 pub struct Bezier<P: Manifold> {
     ctrl: Vec<P>,
     joints: [f64; 2],
+    /// The first de Casteljau level's fixed arcs `G[pᵢ, pᵢ₊₁]`, frames precomputed (`None`
+    /// where the frame does not exist; the slerp then falls back to `pᵢ`, as `try_slerp` does).
+    first: Vec<Option<FixedArc<P::Vector>>>,
 }
 
 impl<P: Manifold> Bezier<P> {
@@ -63,9 +66,14 @@ impl<P: Manifold> Bezier<P> {
     /// consecutive control points are antipodal.
     pub fn try_new(ctrl: Vec<P>) -> Result<Self, SplineError> {
         check_chain(&ctrl, 2)?;
+        let first = ctrl
+            .windows(2)
+            .map(|w| FixedArc::try_new(w[0].to_vector(), w[1].to_vector()))
+            .collect();
         Ok(Self {
             ctrl,
             joints: [0.0, 1.0],
+            first,
         })
     }
 
@@ -95,11 +103,60 @@ impl<P: Manifold> Curve for Bezier<P> {
 
     fn jet_at(&self, t: f64, _side: Side) -> Jet<P> {
         let t = clamp_param(t, [0.0, 1.0]);
-        de_casteljau_jet(&self.ctrl, ScalarJet::param(t, 1.0))
+        self.jet_in(ScalarJet::param(t, 1.0), &mut Vec::new())
     }
 
     fn eval(&self, t: f64) -> P {
-        de_casteljau(&self.ctrl, clamp_param(t, [0.0, 1.0]))
+        self.eval_in(clamp_param(t, [0.0, 1.0]), &mut Vec::new())
+    }
+
+    /// One scratch buffer per batch (the de Casteljau levels), none per sample.
+    fn eval_many(&self, ts: &[f64], out: &mut [P]) {
+        crate::knots::check_batch(ts, out);
+        let mut level = Vec::with_capacity(self.ctrl.len());
+        for (&t, o) in ts.iter().zip(out) {
+            *o = self.eval_in(clamp_param(t, [0.0, 1.0]), &mut level);
+        }
+    }
+
+    /// One scratch buffer per batch (the de Casteljau levels), none per sample.
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<P>]) {
+        crate::knots::check_batch(ts, out);
+        let mut level = Vec::with_capacity(self.ctrl.len());
+        for (&t, o) in ts.iter().zip(out) {
+            let t = clamp_param(t, [0.0, 1.0]);
+            *o = self.jet_in(ScalarJet::param(t, 1.0), &mut level);
+        }
+    }
+}
+
+impl<P: Manifold> Bezier<P> {
+    /// [`de_casteljau`] with the first level from the precomputed arcs: the same operations,
+    /// bit for bit (`FixedArc::point` is `try_slerp` with its frame computed once).
+    fn eval_in(&self, s: f64, level: &mut Vec<P>) -> P {
+        let ctrl = &self.ctrl;
+        if s == 0.0 {
+            return ctrl[0].clone();
+        }
+        if s == 1.0 {
+            return ctrl[ctrl.len() - 1].clone();
+        }
+        level.clear();
+        level.extend(self.first.iter().zip(ctrl).map(|(arc, p)| match arc {
+            Some(arc) => P::from_vector_unchecked(arc.point(s)),
+            None => p.clone(),
+        }));
+        pyramid(level, s)
+    }
+
+    /// [`de_casteljau_jet`] with the first level from the precomputed arcs (bit for bit).
+    fn jet_in(&self, s: ScalarJet, level: &mut Vec<VJet<P::Vector>>) -> Jet<P> {
+        level.clear();
+        level.extend(self.first.iter().zip(&self.ctrl).map(|(arc, p)| match arc {
+            Some(arc) => arc.jet(s),
+            None => VJet::constant(p.to_vector()),
+        }));
+        pyramid_jet(&self.ctrl, s, level)
     }
 }
 
@@ -111,6 +168,11 @@ impl<P: Manifold> Curve for Bezier<P> {
 /// If `ctrl` is empty.
 #[must_use]
 pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
+    de_casteljau_in(ctrl, s, &mut Vec::new())
+}
+
+/// [`de_casteljau`] with the levels in a caller's scratch buffer (batch evaluation reuses it).
+fn de_casteljau_in<P: Manifold>(ctrl: &[P], s: f64, level: &mut Vec<P>) -> P {
     assert!(!ctrl.is_empty(), "de Casteljau needs a control point");
     if s == 0.0 {
         return ctrl[0].clone();
@@ -118,8 +180,14 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
     if s == 1.0 {
         return ctrl[ctrl.len() - 1].clone();
     }
-    let mut level = ctrl.to_vec();
-    for n in (1..ctrl.len()).rev() {
+    level.clear();
+    level.extend_from_slice(ctrl);
+    pyramid(level, s)
+}
+
+/// The remaining de Casteljau levels from `level` (overwritten), `0 < s < 1`.
+fn pyramid<P: Manifold>(level: &mut [P], s: f64) -> P {
+    for n in (1..level.len()).rev() {
         for i in 0..n {
             let next = level[i]
                 .try_slerp(&level[i + 1], s)
@@ -127,7 +195,7 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
             level[i] = next;
         }
     }
-    level.swap_remove(0)
+    level[0].clone()
 }
 
 /// The point and exact first and second derivatives of the spherical Bézier curve with control
@@ -141,15 +209,28 @@ pub fn de_casteljau<P: Manifold>(ctrl: &[P], s: f64) -> P {
 /// If `ctrl` is empty.
 #[must_use]
 pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
+    de_casteljau_jet_in(ctrl, s, &mut Vec::new())
+}
+
+/// [`de_casteljau_jet`] with the levels in a caller's scratch buffer.
+fn de_casteljau_jet_in<P: Manifold>(
+    ctrl: &[P],
+    s: ScalarJet,
+    level: &mut Vec<VJet<P::Vector>>,
+) -> Jet<P> {
     assert!(!ctrl.is_empty(), "de Casteljau needs a control point");
     // The first level has fixed endpoints: plain arcs.
-    let mut level: Vec<VJet<P::Vector>> = if ctrl.len() == 1 {
-        vec![VJet::constant(ctrl[0].to_vector())]
+    level.clear();
+    if ctrl.len() == 1 {
+        level.push(VJet::constant(ctrl[0].to_vector()));
     } else {
-        ctrl.windows(2)
-            .map(|w| first_level(&w[0], &w[1], s))
-            .collect()
-    };
+        level.extend(ctrl.windows(2).map(|w| first_level(&w[0], &w[1], s)));
+    }
+    pyramid_jet(ctrl, s, level)
+}
+
+/// The remaining levels of [`de_casteljau_jet`] from the first (in `level`, overwritten).
+fn pyramid_jet<P: Manifold>(ctrl: &[P], s: ScalarJet, level: &mut [VJet<P::Vector>]) -> Jet<P> {
     for n in (1..ctrl.len().saturating_sub(1)).rev() {
         for i in 0..n {
             let next =
@@ -157,7 +238,7 @@ pub fn de_casteljau_jet<P: Manifold>(ctrl: &[P], s: ScalarJet) -> Jet<P> {
             level[i] = next;
         }
     }
-    let mut top = level.swap_remove(0);
+    let mut top = level[0].clone();
     if s.value == 0.0 {
         top.v = ctrl[0].to_vector();
     } else if s.value == 1.0 {

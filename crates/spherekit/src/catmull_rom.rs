@@ -224,4 +224,15 @@ impl<P: Manifold> Curve for CatmullRom<P> {
         let (i, tau) = self.knots.locate(t, Side::Right);
         self.segments[i].eval(tau)
     }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.segments[i].eval(s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots.map_into(ts, Side::Right, out, |i, s| {
+            self.segments[i].jet(ScalarJet::param(s, 1.0 / self.knots.width(i)))
+        });
+    }
 }

@@ -127,6 +127,21 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
         let (i, s) = self.knots.locate(t, Side::Right);
         renormalize(self.segments[i].point(self.poly, s))
     }
+
+    /// `point` at each of `ts`, mapped by `f`, without a search for sorted parameters.
+    fn points_into<P>(&self, ts: &[f64], out: &mut [P], f: impl Fn(V) -> P) {
+        self.knots.map_into(ts, Side::Right, out, |i, s| {
+            f(renormalize(self.segments[i].point(self.poly, s)))
+        });
+    }
+
+    /// `jet` (right-sided) at each of `ts`, mapped by `f`.
+    fn jets_into<P>(&self, ts: &[f64], out: &mut [P], f: impl Fn((V, V, V)) -> P) {
+        self.knots.map_into(ts, Side::Right, out, |i, s| {
+            let (p, d1, d2) = self.segments[i].jet(self.poly, s);
+            f((renormalize(p), d1, d2))
+        });
+    }
 }
 
 /// Pobegailo's Cⁿ corner smoothing of the great-circle polyline `P₀ → P₁ → … → P_M` on a sphere,
@@ -267,6 +282,19 @@ impl<P: Manifold> Curve for CornerBlend<P> {
     fn eval(&self, t: f64) -> P {
         P::from_vector_unchecked(self.core.point(t))
     }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [P]) {
+        self.core.points_into(ts, out, P::from_vector_unchecked);
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<P>]) {
+        self.core
+            .jets_into(ts, out, |(p, velocity, acceleration)| Jet {
+                point: P::from_vector_unchecked(p),
+                velocity,
+                acceleration,
+            });
+    }
 }
 
 /// Pobegailo's Cⁿ corner smoothing of an orientation polyline `q₀ → q₁ → … → q_M` of unit
@@ -397,5 +425,19 @@ impl Curve for CornerBlendS3 {
 
     fn eval(&self, t: f64) -> UnitQuat {
         UnitQuat::from_vector_unchecked(self.core.point(t))
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [UnitQuat]) {
+        self.core
+            .points_into(ts, out, UnitQuat::from_vector_unchecked);
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<UnitQuat>]) {
+        self.core
+            .jets_into(ts, out, |(p, velocity, acceleration)| Jet {
+                point: UnitQuat::from_vector_unchecked(p),
+                velocity,
+                acceleration,
+            });
     }
 }

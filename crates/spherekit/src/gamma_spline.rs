@@ -416,6 +416,27 @@ impl Curve for GammaSpline {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        self.eval_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl GammaSpline {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<UnitQuat> {
         let (p, velocity, acceleration) =
             cumulative_jet(self.controls[3 * i].as_dquat(), &self.factors(i, s));
         Jet {
@@ -425,8 +446,7 @@ impl Curve for GammaSpline {
         }
     }
 
-    fn eval(&self, t: f64) -> UnitQuat {
-        let (i, s) = self.knots.locate(t, Side::Right);
+    fn eval_local(&self, i: usize, s: f64) -> UnitQuat {
         let p = cumulative_point(self.controls[3 * i].as_dquat(), &self.factors(i, s));
         self.point_at(i, s, p)
     }

@@ -7,7 +7,7 @@ use crate::ambient::Ambient;
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::knots::Knots;
-use crate::manifold::{Manifold, geodesic_frame};
+use crate::manifold::{Manifold, geodesic_frame, renormalize};
 
 /// Checks that there are at least `min` points and no antipodal neighbours.
 pub(crate) fn check_chain<P: Manifold>(points: &[P], min: usize) -> Result<(), SplineError> {
@@ -122,13 +122,40 @@ impl<P: Manifold> Curve for GeodesicSpline<P> {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval(&self, t: f64) -> P {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        self.eval_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl<P: Manifold> GeodesicSpline<P> {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
         let arc = &self.arcs[i];
+        // `slerp(pᵢ, pᵢ₊₁, s)` from the precomputed frame: the same operations, bit for bit,
+        // without recomputing the frame, and one `sin_cos` for the point and the velocity.
+        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
         let point = if s == 1.0 {
             self.points[i + 1].clone()
+        } else if s == 0.0 {
+            self.points[i].clone()
         } else {
-            self.points[i].slerp(&self.points[i + 1], s)
+            P::from_vector_unchecked(renormalize(
+                arc.start.clone() * cs + arc.direction.clone() * sn,
+            ))
         };
-        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
         let velocity = (arc.direction.clone() * cs - arc.start.clone() * sn) * arc.rate;
         let acceleration = point.to_vector() * -(arc.rate * arc.rate);
         Jet {
@@ -138,12 +165,20 @@ impl<P: Manifold> Curve for GeodesicSpline<P> {
         }
     }
 
-    fn eval(&self, t: f64) -> P {
-        let (i, s) = self.knots.locate(t, Side::Right);
+    /// `slerp(pᵢ, pᵢ₊₁, s)` from the precomputed frame (bit for bit the same as
+    /// [`Manifold::try_slerp`], which computes this frame and then this combination).
+    fn eval_local(&self, i: usize, s: f64) -> P {
         if s == 1.0 {
             return self.points[i + 1].clone();
         }
-        self.points[i].slerp(&self.points[i + 1], s)
+        if s == 0.0 {
+            return self.points[i].clone();
+        }
+        let arc = &self.arcs[i];
+        let (sn, cs) = crate::math::sin_cos(s * arc.theta);
+        P::from_vector_unchecked(renormalize(
+            arc.start.clone() * cs + arc.direction.clone() * sn,
+        ))
     }
 }
 
@@ -210,6 +245,22 @@ impl<P: Manifold> Curve for NlerpSpline<P> {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s).point);
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl<P: Manifold> NlerpSpline<P> {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
         let (a, b) = (self.points[i].to_vector(), self.points[i + 1].to_vector());
         let v = a.clone() * (1.0 - s) + b.clone() * s;
         let dv = (b - a) * (1.0 / self.knots.width(i));

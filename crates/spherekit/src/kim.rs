@@ -487,6 +487,27 @@ impl Curve for KimBSpline {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
         let (i, s) = self.knots.locate(t, side);
+        self.jet_local(i, s)
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        self.eval_local(i, s)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl KimBSpline {
+    fn jet_local(&self, i: usize, s: f64) -> Jet<UnitQuat> {
         let [b1, b2, b3] = cubic_bspline_basis(s);
         let factors = [
             (self.rates[i], b1),
@@ -501,8 +522,7 @@ impl Curve for KimBSpline {
         }
     }
 
-    fn eval(&self, t: f64) -> UnitQuat {
-        let (i, s) = self.knots.locate(t, Side::Right);
+    fn eval_local(&self, i: usize, s: f64) -> UnitQuat {
         let [b1, b2, b3] = cubic_bspline_basis(s);
         let factors = [
             (self.rates[i], b1),

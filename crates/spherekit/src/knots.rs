@@ -17,6 +17,7 @@ use crate::error::SplineError;
 /// assert_eq!(k.locate(2.0, Side::Right), (1, 0.5));
 /// assert_eq!(k.locate(1.0, Side::Left), (0, 1.0));
 /// assert_eq!(k.locate(1.0, Side::Right), (1, 0.0));
+/// assert_eq!(k.locate_from(2.5, Side::Right, 0), k.locate(2.5, Side::Right));
 /// assert!(Knots::try_new(vec![0.0, 0.0]).is_err());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -112,7 +113,66 @@ impl Knots {
             Side::Right => k.partition_point(|&x| x <= t),
         };
         let i = above.saturating_sub(1).min(k.len() - 2);
+        self.local(i, t)
+    }
+
+    /// [`locate`](Self::locate) starting the search at piece `hint`: the same result, bit for
+    /// bit, found by stepping forward from `hint` (cheap when parameters arrive in increasing
+    /// order) and by binary search otherwise. Returns the piece, which is the hint to pass
+    /// with the next (larger) parameter.
+    #[must_use]
+    pub fn locate_from(&self, t: f64, side: Side, hint: usize) -> (usize, f64) {
+        let t = clamp_param(t, self.domain());
+        let k = &self.0;
+        let last = k.len() - 2;
+        let mut i = hint.min(last);
+        // `locate` picks the largest i ≤ last with k[i] ≤ t (Right) or k[i] < t (Left), or 0.
+        let before = |x: f64| match side {
+            Side::Left => x < t,
+            Side::Right => x <= t,
+        };
+        if i > 0 && !before(k[i]) {
+            return self.locate(t, side);
+        }
+        while i < last && before(k[i + 1]) {
+            i += 1;
+        }
+        self.local(i, t)
+    }
+
+    /// The local parameter of clamped `t` on piece `i`.
+    #[inline]
+    fn local(&self, i: usize, t: f64) -> (usize, f64) {
+        let k = &self.0;
         let s = (t - k[i]) / (k[i + 1] - k[i]);
         (i, s.clamp(0.0, 1.0))
     }
+
+    /// Calls `f(i, s)` for each parameter of `ts` (as located by [`locate`](Self::locate) with
+    /// `side`) and stores the results in `out`; sorted parameters need no search.
+    pub(crate) fn map_into<T>(
+        &self,
+        ts: &[f64],
+        side: Side,
+        out: &mut [T],
+        mut f: impl FnMut(usize, f64) -> T,
+    ) {
+        check_batch(ts, out);
+        let mut hint = 0;
+        for (&t, o) in ts.iter().zip(out) {
+            let (i, s) = self.locate_from(t, side, hint);
+            hint = i;
+            *o = f(i, s);
+        }
+    }
+}
+
+/// Panics unless the batch buffers have equal lengths.
+#[inline]
+pub(crate) fn check_batch<T>(ts: &[f64], out: &[T]) {
+    assert_eq!(
+        ts.len(),
+        out.len(),
+        "batch evaluation needs one output slot per parameter"
+    );
 }

@@ -725,19 +725,23 @@ impl<P: ScenePoint> Built<P> {
         let mut acceleration = Vec::new();
         let mut omega = Vec::new();
         let mut alpha = Vec::new();
-        for &t in &ts {
-            if deriv {
-                let jet = self.curve.jet(t);
-                if let Some((w, a)) = P::angular(&jet) {
+        // Batch evaluation: one call for all parameters, the same values as `jet`/`eval`.
+        if deriv {
+            let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
+            self.curve.jet_many(&ts, &mut jets);
+            for jet in &jets {
+                if let Some((w, a)) = P::angular(jet) {
                     omega.push(json!(w));
                     alpha.push(json!(a));
                 }
                 velocity.push(json!(P::vector_coords(&jet.velocity)));
                 acceleration.push(json!(P::vector_coords(&jet.acceleration)));
                 points.push(json!(jet.point.coords()));
-            } else {
-                points.push(json!(self.curve.eval(t).coords()));
             }
+        } else {
+            let mut ps = vec![self.curve.eval(domain[0]); ts.len()];
+            self.curve.eval_many(&ts, &mut ps);
+            points.extend(ps.iter().map(|p| json!(p.coords())));
         }
         out.insert("domain".into(), json!(domain));
         out.insert("t".into(), json!(ts));

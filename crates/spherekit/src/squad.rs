@@ -154,6 +154,27 @@ impl Curve for Squad {
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
         let (i, tau) = self.knots.locate(t, side);
+        self.jet_local(i, tau)
+    }
+
+    fn eval(&self, t: f64) -> UnitQuat {
+        let (i, tau) = self.knots.locate(t, Side::Right);
+        self.eval_local(i, tau)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        self.knots
+            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+}
+
+impl Squad {
+    fn jet_local(&self, i: usize, tau: f64) -> Jet<UnitQuat> {
         let seg = &self.segments[i];
         let u = ScalarJet::param(tau, seg.rate);
         let a = seg.keys.jet(u);
@@ -172,8 +193,7 @@ impl Curve for Squad {
         j.into_jet()
     }
 
-    fn eval(&self, t: f64) -> UnitQuat {
-        let (i, tau) = self.knots.locate(t, Side::Right);
+    fn eval_local(&self, i: usize, tau: f64) -> UnitQuat {
         if tau == 0.0 {
             return self.keys[i];
         }
