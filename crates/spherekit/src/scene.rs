@@ -81,13 +81,36 @@ pub enum SceneError {
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Json(m) => write!(f, "invalid scene JSON: {m}"),
-            Self::Field { field, message } => write!(f, "{field}: {message}"),
-            Self::Spline(e) => write!(f, "{e}"),
-            Self::InCurve { index, error } => write!(f, "curves[{index}].{error}"),
+        // Messages quote the scene's own strings (an unknown field or method name, a colour),
+        // which may hold control characters such as a JSON-escaped newline: escape them so that
+        // the text stays one line.
+        let text = match self {
+            Self::Json(m) => format!("invalid scene JSON: {m}"),
+            Self::Field { field, message } => format!("{field}: {message}"),
+            Self::Spline(e) => e.to_string(),
+            Self::InCurve { index, error } => format!("curves[{index}].{error}"),
+        };
+        f.write_str(&one_line(&text))
+    }
+}
+
+/// `text` with every control character escaped (`\n` becomes the two characters `\` `n`), so
+/// that an error message quoting user input is one line.
+///
+/// ```
+/// assert_eq!(spherekit::scene::one_line("a\nb\tc"), "a\\nb\\tc");
+/// ```
+#[must_use]
+pub fn one_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
         }
     }
+    out
 }
 
 impl core::error::Error for SceneError {}
