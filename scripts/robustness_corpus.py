@@ -347,11 +347,13 @@ def bad_cases():
         ("samples_fraction", "{" + S2 + ',"samples":2.5}', "samples: must be a whole number from 2 to 1000000, got 2.5"),
         ("samples_1e12", "{" + S2 + ',"samples":1e12}', "samples: must be a whole number from 2 to 1000000, got 1000000000000"),
         ("samples_above_limit", "{" + S2 + ',"samples":1000001}', "samples: must be a whole number from 2 to 1000000"),
+        ("samples_times_curves_above_limit", '{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]]},{"method":"nlerp","points":[[1,0,0],[0,1,0]]}],"samples":600000}', "samples: 2 curves × 600000 parameters exceed the limit of 1000000 evaluations per scene"),
         ("samples_string", "{" + S2 + ',"samples":"10"}', "invalid type: string"),
         ("samples_and_eval_at", "{" + S2 + ',"samples":5,"eval_at":[0]}', "eval_at: give either samples or eval_at"),
         ("eval_at_empty", "{" + S2 + ',"eval_at":[]}', "eval_at: must have 1 to 1000000 parameters, got 0"),
         # Method parameters.
         ("order_zero", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":0}}', "params.order: must be a whole number from 1 to 10, got 0"),
+        ("order_eleven", '{"space":"S3","method":"corner-blend","points":[[1,0,0,0],[0,1,0,0],[0,0,1,0]],"params":{"order":11}}', "params.order: must be a whole number from 1 to 10, got 11"),
         ("order_huge", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":1e12}}', "params.order: must be a whole number"),
         ("order_negative", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":-1}}', "params.order: must be a whole number"),
         ("fraction_above_half", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"fraction":0.75}}', "params.fraction must be in (0, 0.5]"),

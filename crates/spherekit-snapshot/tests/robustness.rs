@@ -283,3 +283,21 @@ fn fuzz_regression_unknown_field_with_escaped_newline_is_one_line() {
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
 }
+
+/// `MAX_SAMPLES` bounds the evaluations of the whole scene: `--samples` on a `curves` list is
+/// checked against the product too.
+#[test]
+fn samples_limit_counts_every_curve() {
+    let scene = r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]]},
+        {"method":"nlerp","points":[[1,0,0],[0,1,0]]}]}"#;
+    let out = spherekit_cli(&["sample", "-", "--samples", "600000"], scene.as_bytes());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(
+        stderr.trim_end(),
+        "error: --samples: 2 curves × 600000 parameters exceed the limit of 1000000 evaluations per scene"
+    );
+    let mut s = Scene::from_json(scene).unwrap();
+    assert!(s.set_samples(500_000).is_ok());
+}
