@@ -55,6 +55,32 @@ fn check_built<P: ScenePoint>(scene: &Scene, b: &Built<P>) -> Result<(), String>
     let mut ts = scene.parameters([t0, t1]);
     ts.extend(b.curve.joints().iter().copied());
     ts.extend(EXTREME_PARAMS);
+    // Just inside and just outside both ends.
+    for t in [t0, t1] {
+        let h = 1e-9 * t.abs().max(1.0);
+        ts.extend([t.next_down(), t.next_up(), t - h, t + h]);
+    }
+    // The domain policy: outside the domain the jet is the one at the nearer end (clamping).
+    for side in [Side::Left, Side::Right] {
+        for (outside, end) in [
+            (f64::NEG_INFINITY, t0),
+            (t0 - 1.0, t0),
+            (t0.next_down(), t0),
+            (t1.next_up(), t1),
+            (t1 + 1.0, t1),
+            (f64::INFINITY, t1),
+        ] {
+            let (a, e) = (b.curve.jet_at(outside, side), b.curve.jet_at(end, side));
+            let same = a.point.to_vector().to_vec() == e.point.to_vector().to_vec()
+                && a.velocity.to_vec() == e.velocity.to_vec()
+                && a.acceleration.to_vec() == e.acceleration.to_vec();
+            if !same {
+                return Err(format!(
+                    "not clamped: jet_at({outside}, {side:?}) differs from jet_at({end}, {side:?})"
+                ));
+            }
+        }
+    }
     for t in ts {
         for side in [Side::Left, Side::Right] {
             let jet = b.curve.jet_at(t, side);
@@ -209,43 +235,46 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
         .filter(|m| space == "S3" || m.support().describe() != "S3")
         .collect();
     let method = pick(u, &methods)?;
-    let n = u.int_in_range(2_usize..=10)?;
+    // Mostly enough points for every method (4); sometimes too few.
+    let n = if u.ratio(1, 8)? {
+        u.int_in_range(1_usize..=3)?
+    } else {
+        u.int_in_range(4_usize..=10)?
+    };
+    // Unit points; `scale` is applied to the written coordinates only (1e±300 tests the
+    // normalisation on input).
+    let mut units: Vec<Vec<f64>> = Vec::with_capacity(n);
     let mut points: Vec<Vec<f64>> = Vec::with_capacity(n);
     let first = (0..dim).map(|_| coord(u)).collect::<ArbResult<Vec<_>>>()?;
-    points.push(normalized(first));
-    while points.len() < n {
-        let prev = points[points.len() - 1].clone();
-        let prev = normalized(prev);
-        let next = match u.int_in_range(0_u8..=9)? {
-            0 => normalized((0..dim).map(|_| coord(u)).collect::<ArbResult<_>>()?),
-            1 => prev.clone(),
-            2 => {
+    // (All coordinates 0 gives a zero point, which must be rejected naming it.)
+    units.push(normalized(first));
+    while units.len() < n {
+        let prev = units[units.len() - 1].clone();
+        let next = match u.int_in_range(0_u8..=19)? {
+            0 | 1 => normalized((0..dim).map(|_| coord(u)).collect::<ArbResult<_>>()?),
+            2 | 3 => prev.clone(),
+            4..=6 => {
                 let eps = tiny(u)?;
                 rotate_by(u, &prev, eps)?
             }
-            3 => prev.iter().map(|x| -x).collect(),
-            4 => {
+            7 => prev.iter().map(|x| -x).collect(),
+            8 | 9 => {
                 let eps = tiny(u)?;
                 rotate_by(u, &prev, eps)?.iter().map(|x| -x).collect()
             }
-            5 => {
+            10 | 11 => {
                 // Continue along the great circle through the last two points.
-                if points.len() >= 2 {
-                    let a = normalized(points[points.len() - 2].clone());
+                if units.len() >= 2 {
+                    let a = &units[units.len() - 2];
                     let d: f64 = a.iter().zip(&prev).map(|(x, y)| x * y).sum();
-                    a.iter().zip(&prev).map(|(x, y)| 2.0 * d * y - x).collect()
+                    normalized(a.iter().zip(&prev).map(|(x, y)| 2.0 * d * y - x).collect())
                 } else {
                     rotate_by(u, &prev, 0.5)?
                 }
             }
-            6 => {
-                let scale = pick(u, &[1e-300, 1e-150, 1e150, 1e300])?;
-                prev.iter().map(|x| x * scale).collect()
-            }
-            7 => {
-                let half_turn_minus =
-                    pick(u, &[std::f64::consts::FRAC_PI_2, 3.0, std::f64::consts::PI])?;
-                let angle = half_turn_minus - tiny(u)?;
+            12 | 13 => {
+                let angle = pick(u, &[std::f64::consts::FRAC_PI_2, 3.0, std::f64::consts::PI])?;
+                let angle = angle - tiny(u)?;
                 rotate_by(u, &prev, angle)?
             }
             _ => {
@@ -253,7 +282,15 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
                 rotate_by(u, &prev, angle)?
             }
         };
-        points.push(next);
+        units.push(next);
+    }
+    for p in &units {
+        let scale = if u.ratio(1, 10)? {
+            pick(u, &[1e-300, 1e-150, 1e150, 1e300])?
+        } else {
+            1.0
+        };
+        points.push(p.iter().map(|x| x * scale).collect());
     }
     let mut scene = Map::new();
     scene.insert("space".into(), json!(space));
