@@ -15,25 +15,47 @@ use arbtest::arbitrary as arb;
 #[path = "support/robust.rs"]
 mod robust;
 
-use robust::{check_scene_capped, extreme_scene};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Milliseconds per property (two properties: about 3 s in all).
-const BUDGET_MS: u64 = 1500;
+use robust::{Outcome, check_scene_capped, extreme_scene};
+
+/// Prints how many cases a property ran and how many built (visible with `--nocapture`).
+fn report(name: &str, cases: &AtomicUsize, built: &AtomicUsize) {
+    eprintln!(
+        "{name}: {} cases, {} built, the rest rejected with one line",
+        cases.load(Ordering::Relaxed),
+        built.load(Ordering::Relaxed)
+    );
+}
+
+/// Milliseconds per property (two properties: about 3 s in all); `SPHEREKIT_PROPTEST_MS`
+/// overrides it for a longer soak (`SPHEREKIT_PROPTEST_MS=300000 cargo test --release …`).
+fn budget_ms() -> u64 {
+    std::env::var("SPHEREKIT_PROPTEST_MS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1500)
+}
 
 /// Valid-but-extreme geometry: every scene either builds with finite unit results everywhere
 /// (including parameters far outside the domain) or is rejected with one line.
 #[test]
 fn extreme_geometry_is_finite_or_rejected() {
+    let (cases, built) = (AtomicUsize::new(0), AtomicUsize::new(0));
     arbtest::arbtest(|u| {
         let scene = extreme_scene(u)?;
         let text = scene.to_string();
-        if let Err(e) = check_scene_capped(&text, Some(16), 64) {
-            panic!("{e}\nscene: {text}");
+        cases.fetch_add(1, Ordering::Relaxed);
+        match check_scene_capped(&text, Some(16), 64) {
+            Ok(Outcome::Ok) => _ = built.fetch_add(1, Ordering::Relaxed),
+            Ok(Outcome::Rejected(_)) => {}
+            Err(e) => panic!("{e}\nscene: {text}"),
         }
         Ok(())
     })
-    .budget_ms(BUDGET_MS)
+    .budget_ms(budget_ms())
     .run();
+    report("extreme geometry", &cases, &built);
 }
 
 /// Arbitrary scene text: a mutated valid scene (bytes replaced, cut or spliced) never panics,
@@ -48,6 +70,7 @@ fn mutated_scene_text_never_panics() {
     const TOKENS: [&str; 12] = [
         "0", "-1", "1e-9", "1e300", "[", "]", ",", "{", "}", "\"", "null", "[1,0,0]",
     ];
+    let (cases, built) = (AtomicUsize::new(0), AtomicUsize::new(0));
     arbtest::arbtest(|u| {
         let mut text = (*u.choose(&SEEDS)?).to_owned();
         for _ in 0..u.int_in_range(1_u8..=4)? {
@@ -65,11 +88,15 @@ fn mutated_scene_text_never_panics() {
                 }
             }
         }
-        if let Err(e) = check_scene_capped(&text, Some(16), 64) {
-            panic!("{e}\nscene: {text}");
+        cases.fetch_add(1, Ordering::Relaxed);
+        match check_scene_capped(&text, Some(16), 64) {
+            Ok(Outcome::Ok) => _ = built.fetch_add(1, Ordering::Relaxed),
+            Ok(Outcome::Rejected(_)) => {}
+            Err(e) => panic!("{e}\nscene: {text}"),
         }
         Ok(())
     })
-    .budget_ms(BUDGET_MS)
+    .budget_ms(budget_ms())
     .run();
+    report("mutated scene text", &cases, &built);
 }
