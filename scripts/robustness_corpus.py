@@ -339,6 +339,10 @@ def bad_cases():
         ("knots_repeated", "{" + S2 + ',"knots":[0,1,1]}', "knots[2]"),
         ("knots_wrong_count", "{" + S2 + ',"knots":[0,1]}', "knots: expected 3 knots, got 2"),
         ("knots_for_bezier", '{"space":"S2","method":"bezier","points":[[1,0,0],[0,1,0]],"knots":[0,1]}', 'knots: method "bezier" computes its own knots'),
+        # Found by fuzzing (scene_bytes): 1e-96 spacing made |acceleration jumps| overflow.
+        ("knots_spacing_1e-96", '{"space":"S2","method":"catmull-rom","points":[[0.9245181863860598,0.09276122906808075,0.36967753167214523],[0.6578469395012764,0.6773445735480922,0.32930492385288923],[0.06933930854407318,0.9777827086264879,-0.19782071428866735],[-0.5319188672180433,0.7307624041144873,-0.4278418252465374],[-0.9702795301900121,0.23908210989940434,-0.03738151976978039]],"knots":[0.0,1e-96,1000000.000001],"samples":257}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
+        ("knots_spacing_subnormal", "{" + S2 + ',"knots":[0,5e-324,1]}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
+        ("knots_spacing_overflows", "{" + S2 + ',"knots":[-1e308,1e308,1.7e308]}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
         ("knots_strings", "{" + S2 + ',"knots":["0","1","2"]}', "invalid type: string"),
         # Sampling.
         ("samples_zero", "{" + S2 + ',"samples":0}', "samples: must be a whole number from 2 to 1000000, got 0"),

@@ -301,3 +301,88 @@ fn samples_limit_counts_every_curve() {
     let mut s = Scene::from_json(scene).unwrap();
     assert!(s.set_samples(500_000).is_ok());
 }
+
+/// Fuzz finding (`scene_bytes`, 2026-11-22): knots 1e-96 apart gave accelerations near 1e192,
+/// whose difference's norm overflowed in the continuity report (`c2: null` in the JSON); knots
+/// 1e-160 apart overflowed the accelerations themselves, 5e-324 apart the velocities and
+/// Catmull-Rom's control points. Knot spacings are now limited to
+/// `MIN_KNOT_SPACING ..= MAX_KNOT_SPACING`, and `Ambient::length` rescales when the sum of
+/// squares overflows.
+#[test]
+fn fuzz_regression_tiny_knot_spacing() {
+    use spherekit::glam::DVec3;
+    use spherekit::{Ambient, Knots, MAX_KNOT_SPACING, MIN_KNOT_SPACING, SplineError};
+    let input =
+        std::fs::read_to_string(corpus_dir("bad").join("knots_spacing_1e-96.json")).unwrap();
+    let e = Scene::from_json(&input)
+        .unwrap()
+        .build()
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "knots[1] − knots[0] must be from 1e-50 to 1e50: derivatives would overflow"
+    );
+    assert!(Knots::try_new(vec![0.0, MIN_KNOT_SPACING, 1.0]).is_ok());
+    assert!(Knots::try_new(vec![0.0, MAX_KNOT_SPACING]).is_ok());
+    assert_eq!(
+        Knots::try_new(vec![-1e308, 1e308]),
+        Err(SplineError::KnotSpacing { index: 1 })
+    );
+    // The norm of a finite vector is finite when it is representable.
+    let v = DVec3::new(3e200, -4e200, 0.0);
+    assert!((Ambient::length(&v) / 5e200 - 1.0).abs() < 1e-15);
+    assert_eq!(Ambient::length(&DVec3::new(3.0, 4.0, 0.0)), 5.0);
+    // Near the limits (JSON parsing may be 1 ulp off the constants) every method with knots stays finite, continuity report included.
+    for (method, space, points, knots) in [
+        (
+            "catmull-rom",
+            "S2",
+            "[[1,0,0],[0.6,0.8,0],[0,0.6,0.8],[0.8,0,0.6],[0,1,0]]",
+            "[0,2e-50,5e49]",
+        ),
+        (
+            "geodesic",
+            "S2",
+            "[[1,0,0],[0.6,0.8,0],[0,0.6,0.8],[0.8,0,0.6]]",
+            "[0,2e-50,5e49,9e49]",
+        ),
+        (
+            "nlerp",
+            "S2",
+            "[[1,0,0],[0.6,0.8,0],[0,0.6,0.8],[0.8,0,0.6]]",
+            "[0,5e49,5e49,9e49]",
+        ),
+        (
+            "squad",
+            "S3",
+            "[[1,0,0,0],[0.8,0.6,0,0],[0.6,0,0.8,0],[0.6,0,0,0.8]]",
+            "[0,2e-50,5e49,9e49]",
+        ),
+        (
+            "gamma",
+            "S3",
+            "[[1,0,0,0],[0.8,0.6,0,0],[0.6,0,0.8,0],[0.6,0,0,0.8],[0,1,0,0]]",
+            "[0,2e-50,5e49]",
+        ),
+        (
+            "catmull-rom",
+            "S3",
+            "[[1,0,0,0],[0.8,0.6,0,0],[0.6,0,0.8,0],[0.6,0,0,0.8],[0,1,0,0]]",
+            "[0,2e-50,2e-50]",
+        ),
+    ] {
+        let scene = format!(
+            r#"{{"space":"{space}","method":"{method}","points":{points},"knots":{knots},"samples":33}}"#
+        );
+        match check_scene(&scene, Some(16)) {
+            Ok(Outcome::Ok) => {}
+            Ok(Outcome::Rejected(e))
+                if knots == "[0,2e-50,2e-50]" || knots.contains("5e49,5e49") =>
+            {
+                assert!(e.contains("knots[2]"), "{e}");
+            }
+            other => panic!("{method} {knots}: {other:?}"),
+        }
+    }
+}

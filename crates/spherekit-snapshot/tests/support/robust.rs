@@ -310,7 +310,9 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
         let mut knots = Vec::with_capacity(count);
         for _ in 0..count {
             knots.push(t);
-            t += 10f64.powi(u.int_in_range(-6_i32..=6)?);
+            // Mostly 1e-6 … 1e6; sometimes up to and past the limits 1e-50 and 1e50.
+            let range = if u.ratio(1, 8)? { -60..=60 } else { -6..=6 };
+            t += 10f64.powi(u.int_in_range(range)?);
         }
         scene.insert("knots".into(), json!(knots));
     }
