@@ -54,3 +54,25 @@ bench-compare:
     .venv/bin/pip install --quiet --disable-pip-version-check scipy==1.17.1 numpy==2.4.6 numpy-quaternion==2024.0.13 splines==0.3.3
     cargo build --quiet --release -p spherekit --example bench_json
     .venv/bin/python scripts/bench_compare.py
+
+# Fuzz scene parsing and curve construction for SECONDS per target (see ROBUSTNESS.md); crashes land in fuzz/artifacts/
+fuzz seconds="600" target="all":
+    #!/usr/bin/env bash
+    set -euo pipefail
+    command -v cargo-fuzz >/dev/null || cargo install --locked cargo-fuzz
+    # Stable rustc accepts the -Z flags cargo-fuzz passes when RUSTC_BOOTSTRAP is set.
+    export RUSTC_BOOTSTRAP=1
+    sanitizer=address
+    cargo fuzz build -O --sanitizer "$sanitizer" || { sanitizer=none; cargo fuzz build -O --sanitizer none; }
+    targets="{{target}}"
+    [ "$targets" = all ] && targets="scene_bytes extreme_geometry"
+    for t in $targets; do
+        mkdir -p "fuzz/corpus/$t"
+        extra=(-len_control=0)
+        if [ "$t" = scene_bytes ]; then
+            cp tests/golden/*.json tests/robustness/degenerate/*.json tests/robustness/bad/*.json "fuzz/corpus/$t/"
+            extra=(-dict=fuzz/scene.dict)
+        fi
+        cargo fuzz run -O --sanitizer "$sanitizer" "$t" "fuzz/corpus/$t" -- \
+            -max_total_time={{seconds}} -max_len=4096 -timeout=20 -rss_limit_mb=3072 "${extra[@]}"
+    done

@@ -80,7 +80,10 @@ impl fmt::Display for RenderError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::Scene(e) => write!(f, "{e}"),
-            Self::View { field, message } => write!(f, "{field}: {message}"),
+            // The field may quote an unknown `view` key, control characters and all.
+            Self::View { field, message } => {
+                write!(f, "{}: {message}", spherekit::scene::one_line(field))
+            }
             Self::Size(s) => write!(
                 f,
                 "size: {s} is outside {}..={} pixels",

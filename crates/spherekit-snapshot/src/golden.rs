@@ -174,13 +174,22 @@ pub fn scene_names() -> Result<Vec<String>, GoldenError> {
 ///
 /// [`GoldenError::Scene`] for a missing or bad scene.
 pub fn render_scene(name: &str) -> Result<Pixmap, GoldenError> {
-    let path = golden_dir().join(format!("{name}.json"));
+    render_scene_file(&golden_dir().join(format!("{name}.json")))
+}
+
+/// Renders the scene file at `path` at [`GOLDEN_SIZE`] (the error names it by its file stem).
+///
+/// # Errors
+///
+/// [`GoldenError::Scene`] for a missing or bad scene.
+pub fn render_scene_file(path: &Path) -> Result<Pixmap, GoldenError> {
+    let name = stem(path);
     let bad = |message: String| GoldenError::Scene {
-        name: name.to_owned(),
+        name: name.clone(),
         message,
     };
     let text =
-        std::fs::read_to_string(&path).map_err(|e| bad(format!("{}: {e}", path.display())))?;
+        std::fs::read_to_string(path).map_err(|e| bad(format!("{}: {e}", path.display())))?;
     let scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
     spherekit_render::render(&scene, GOLDEN_SIZE).map_err(|e| bad(e.to_string()))
 }

@@ -35,9 +35,17 @@ pub trait Ambient:
     /// Coordinates in storage order (for `DVec4` ambient quaternions: `x, y, z, w`).
     fn to_vec(&self) -> Vec<f64>;
 
-    /// The Euclidean length.
+    /// The Euclidean length. Finite for every finite vector: when the sum of squares overflows
+    /// (a coordinate above about 1e154, such as a second derivative over a tiny knot spacing),
+    /// the coordinates are rescaled by the largest one first.
     fn length(&self) -> f64 {
-        self.dot(self).sqrt()
+        let d = self.dot(self);
+        if d.is_finite() || !self.is_finite() {
+            return d.sqrt();
+        }
+        let v = self.to_vec();
+        let m = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
     }
 
     /// `true` when every coordinate is finite.

@@ -75,6 +75,13 @@ pub enum SplineError {
         /// Index into the knots.
         index: usize,
     },
+    /// The spacing `knots[index] − knots[index − 1]` is outside
+    /// [`MIN_KNOT_SPACING`](crate::MIN_KNOT_SPACING) ..= [`MAX_KNOT_SPACING`](crate::MAX_KNOT_SPACING):
+    /// derivatives (which scale as 1/spacing²) or the spacing itself would overflow.
+    KnotSpacing {
+        /// Index into the knots.
+        index: usize,
+    },
     /// The number of knots does not fit the number of points.
     KnotCount {
         /// Knots the construction needs.
@@ -125,6 +132,13 @@ impl fmt::Display for SplineError {
                 f,
                 "knots[{index}] is not greater than knots[{}]: knots must be strictly increasing",
                 index.saturating_sub(1)
+            ),
+            Self::KnotSpacing { index } => write!(
+                f,
+                "knots[{index}] − knots[{}] must be from {:e} to {:e}: derivatives would overflow",
+                index.saturating_sub(1),
+                crate::MIN_KNOT_SPACING,
+                crate::MAX_KNOT_SPACING
             ),
             Self::KnotCount { expected, got } => {
                 write!(f, "knots: expected {expected} knots, got {got}")

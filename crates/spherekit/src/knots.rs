@@ -6,7 +6,19 @@
 use crate::curve::{Side, clamp_param};
 use crate::error::SplineError;
 
-/// A strictly increasing, finite sequence of at least two parameters.
+/// The smallest spacing of consecutive knots. On a piece of parameter length h the k-th
+/// derivative is about θ/hᵏ (θ the piece's angle), times ratios of neighbouring spacings in the
+/// non-uniform constructions. Fuzzing found knots 1e-96 apart giving accelerations whose norms
+/// overflowed, and 1e-160 apart accelerations that overflowed themselves; with spacings in
+/// [`MIN_KNOT_SPACING`, `MAX_KNOT_SPACING`] (ratios up to 1e100) every method stays finite.
+pub const MIN_KNOT_SPACING: f64 = 1e-50;
+
+/// The largest spacing of consecutive knots (see [`MIN_KNOT_SPACING`]); it also keeps
+/// `knots[i] − knots[i − 1]` finite (`1e308 − (−1e308)` is not).
+pub const MAX_KNOT_SPACING: f64 = 1e50;
+
+/// A strictly increasing, finite sequence of at least two parameters, with consecutive spacings
+/// from [`MIN_KNOT_SPACING`] to [`MAX_KNOT_SPACING`].
 ///
 /// # Examples
 ///
@@ -41,7 +53,8 @@ impl Knots {
     ///
     /// [`SplineError::KnotCount`] for fewer than two knots, [`SplineError::InvalidKnot`] for a
     /// non-finite knot, [`SplineError::KnotsNotIncreasing`] where a knot does not exceed its
-    /// predecessor.
+    /// predecessor, [`SplineError::KnotSpacing`] for a spacing outside
+    /// [`MIN_KNOT_SPACING`] ..= [`MAX_KNOT_SPACING`].
     pub fn try_new(knots: Vec<f64>) -> Result<Self, SplineError> {
         if knots.len() < 2 {
             return Err(SplineError::KnotCount {
@@ -57,6 +70,12 @@ impl Knots {
             .position(|w| w[1] <= w[0] || (w[1] - w[0]) == 0.0)
         {
             return Err(SplineError::KnotsNotIncreasing { index: i + 1 });
+        }
+        if let Some(i) = knots
+            .windows(2)
+            .position(|w| !(MIN_KNOT_SPACING..=MAX_KNOT_SPACING).contains(&(w[1] - w[0])))
+        {
+            return Err(SplineError::KnotSpacing { index: i + 1 });
         }
         Ok(Self(knots))
     }

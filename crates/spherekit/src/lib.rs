@@ -131,7 +131,7 @@ pub use error::{PointError, SolveError, SplineError};
 pub use gamma_spline::{GammaJoint, GammaSpline, Gammas, LastEdge};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
 pub use kim::{KimBSpline, KimBezier};
-pub use knots::Knots;
+pub use knots::{Knots, MAX_KNOT_SPACING, MIN_KNOT_SPACING};
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use rotation::{
     ROTATION_TOLERANCE, RotationError, rodrigues_compose, rotation_matrix_from_rodrigues,

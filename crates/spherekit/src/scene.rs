@@ -46,7 +46,8 @@ use crate::{
     SnPoint, SplineError, Squad, UnitQuat, VecN, angular_velocity_acceleration, unflip,
 };
 
-/// The most samples (or `eval_at` parameters) a scene may ask for.
+/// The most evaluations a scene may ask for: `samples` (or the number of `eval_at` parameters)
+/// times the number of curves. Larger requests are rejected before anything is allocated.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// The number of samples when a scene gives neither `samples` nor `eval_at`.
@@ -81,13 +82,36 @@ pub enum SceneError {
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Json(m) => write!(f, "invalid scene JSON: {m}"),
-            Self::Field { field, message } => write!(f, "{field}: {message}"),
-            Self::Spline(e) => write!(f, "{e}"),
-            Self::InCurve { index, error } => write!(f, "curves[{index}].{error}"),
+        // Messages quote the scene's own strings (an unknown field or method name, a colour),
+        // which may hold control characters such as a JSON-escaped newline: escape them so that
+        // the text stays one line.
+        let text = match self {
+            Self::Json(m) => format!("invalid scene JSON: {m}"),
+            Self::Field { field, message } => format!("{field}: {message}"),
+            Self::Spline(e) => e.to_string(),
+            Self::InCurve { index, error } => format!("curves[{index}].{error}"),
+        };
+        f.write_str(&one_line(&text))
+    }
+}
+
+/// `text` with every control character escaped (`\n` becomes the two characters `\` `n`), so
+/// that an error message quoting user input is one line.
+///
+/// ```
+/// assert_eq!(spherekit::scene::one_line("a\nb\tc"), "a\\nb\\tc");
+/// ```
+#[must_use]
+pub fn one_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
         }
     }
+    out
 }
 
 impl core::error::Error for SceneError {}
@@ -405,6 +429,25 @@ fn samples_count(x: f64) -> Result<usize, SceneError> {
     Ok(x as usize)
 }
 
+/// Rejects a scene whose curves together would be evaluated more than [`MAX_SAMPLES`] times (a
+/// `curves` list multiplies the per-curve count, so a small file could otherwise ask for 10¹⁰
+/// evaluations).
+fn check_total(curves: usize, sampling: &Sampling) -> Result<(), SceneError> {
+    let (field, per_curve) = match sampling {
+        Sampling::Uniform(n) => ("samples", *n),
+        Sampling::At(ts) => ("eval_at", ts.len()),
+    };
+    if curves.saturating_mul(per_curve) > MAX_SAMPLES {
+        return Err(field_error(
+            field,
+            format!(
+                "{curves} curves × {per_curve} parameters exceed the limit of {MAX_SAMPLES} evaluations per scene"
+            ),
+        ));
+    }
+    Ok(())
+}
+
 fn parse_color(field: &str, c: Option<String>) -> Result<Option<[u8; 3]>, SceneError> {
     let Some(c) = c else { return Ok(None) };
     let hex = c
@@ -563,6 +606,7 @@ impl Scene {
             }
             (None, None) => Sampling::Uniform(DEFAULT_SAMPLES),
         };
+        check_total(curves.len(), &sampling)?;
         Ok(Self {
             space,
             curves,
@@ -576,14 +620,16 @@ impl Scene {
     ///
     /// # Errors
     ///
-    /// A [`SceneError::Field`] on `samples` unless `2 ≤ n ≤ MAX_SAMPLES`.
+    /// A [`SceneError::Field`] on `samples` unless `2 ≤ n ≤ MAX_SAMPLES` and the curves together
+    /// stay within [`MAX_SAMPLES`] evaluations.
     pub fn set_samples(&mut self, n: usize) -> Result<(), SceneError> {
         #[expect(
             clippy::cast_precision_loss,
             reason = "only compared against a small limit"
         )]
-        let count = samples_count(n as f64)?;
-        self.sampling = Sampling::Uniform(count);
+        let sampling = Sampling::Uniform(samples_count(n as f64)?);
+        check_total(self.curves.len(), &sampling)?;
+        self.sampling = sampling;
         Ok(())
     }
 

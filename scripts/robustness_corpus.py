@@ -1,0 +1,408 @@
+#!/usr/bin/env python3
+# Copyright 2026 the Spherekit Authors
+# SPDX-License-Identifier: Apache-2.0 OR MIT
+"""Writes the degenerate-geometry corpus tests/robustness/degenerate/ (see ROBUSTNESS.md).
+
+Each case is one scene file named after what it tests and its expected outcome:
+`NAME.ok.json` (must build; every sample finite, unit norm) or `NAME.err.json` with
+`NAME.err.txt` beside it holding a substring the one-line error must contain. The
+expectations are the function expect_err below; every case not in it is expected to succeed.
+Run from the repository root: `python3 scripts/robustness_corpus.py`.
+"""
+
+import json
+import math
+import os
+import shutil
+
+OUT = "tests/robustness/degenerate"
+
+# Methods and the spaces they run on ("Sn" stands for S5 here).
+ALL_SPACES = ["S2", "S3", "S5"]
+METHODS = {
+    "geodesic": ALL_SPACES,
+    "nlerp": ALL_SPACES,
+    "bezier": ALL_SPACES,
+    "catmull-rom": ALL_SPACES,
+    "beta": ALL_SPACES,
+    "arc-blend": ALL_SPACES,
+    "corner-blend": ALL_SPACES,
+    "bezier-kim": ["S3"],
+    "bspline-kim": ["S3"],
+    "squad": ["S3"],
+    "gamma": ["S3"],
+}
+TAKES_KNOTS = {"geodesic", "nlerp", "catmull-rom", "squad", "gamma"}
+# Methods whose knots are at the inner points p₁ … p_{n−2} only.
+KNOTS_AT_INNER = {"gamma", "catmull-rom"}
+MIN_POINTS = {"catmull-rom": 4, "gamma": 4, "bspline-kim": 4, "arc-blend": 3, "corner-blend": 3, "beta": 3}
+
+# Wide parameter list: far outside, just outside, at, just inside each end of [0, 1] and [0, 3].
+EDGE_PARAMS = [-1e300, -1.0, -1e-12, -0.0, 0.0, 1e-12, 0.5, 1.0 - 1e-12, 1.0, 1.0 + 1e-12,
+               2.0, 3.0 - 1e-12, 3.0, 3.0 + 1e-12, 4.0, 1e300]
+
+
+def unit(v):
+    n = math.sqrt(sum(x * x for x in v))
+    return [x / n for x in v]
+
+
+def rot(axis, angle):
+    """Quaternion [w, x, y, z] of the rotation by `angle` about `axis`."""
+    a = unit(axis)
+    s = math.sin(angle / 2)
+    return [math.cos(angle / 2), a[0] * s, a[1] * s, a[2] * s]
+
+
+def on_circle(space, angle):
+    """The point at `angle` along one fixed great circle of `space`."""
+    c, s = math.cos(angle), math.sin(angle)
+    if space == "S2":
+        return unit([c, s * 0.6, s * 0.8])
+    if space == "S3":
+        return [c, s * 0.48, s * 0.6, s * 0.64]
+    return [c, 0.0, s * 0.6, 0.0, s * 0.8, 0.0]
+
+
+def generic(space, n, seed=1):
+    """n well-spread points (about 0.7 rad apart) that wind around the sphere."""
+    pts = []
+    for i in range(n):
+        a = 0.7 * i + 0.1 * seed
+        b = 0.45 * math.sin(1.3 * i + seed)
+        if space == "S2":
+            p = [math.cos(a) * math.cos(b), math.sin(a) * math.cos(b), math.sin(b)]
+        elif space == "S3":
+            p = [math.cos(a / 2) * math.cos(b), math.sin(a / 2) * math.cos(b), math.sin(b) * 0.6, math.sin(b) * 0.8]
+        else:
+            p = [math.cos(a) * math.cos(b), math.sin(a) * math.cos(b), math.sin(b) * 0.6, 0.0, math.sin(b) * 0.8, 0.1]
+        pts.append(unit(p))
+    return pts
+
+
+def near(p, eps, space):
+    """A point at angle eps from p (in a direction orthogonal to p)."""
+    d = [0.0] * len(p)
+    # Gram-Schmidt from a fixed vector.
+    v = [0.3, -0.5, 0.7, 0.2, -0.1, 0.4][: len(p)]
+    dot = sum(a * b for a, b in zip(v, p))
+    d = unit([a - dot * b for a, b in zip(v, p)])
+    return [math.cos(eps) * a + math.sin(eps) * b for a, b in zip(p, d)]
+
+
+def scene(space, method, points, **extra):
+    s = {"space": space, "method": method, "points": points}
+    s.update(extra)
+    return s
+
+
+def cases():
+    """Yields (name, scene)."""
+    for method, spaces in METHODS.items():
+        m = method.replace("-", "_")
+        nmin = max(MIN_POINTS.get(method, 2), 4)
+        for space in spaces:
+            sp = space.lower()
+            base = generic(space, nmin + 1)
+            pre = f"{m}_{sp}"
+            # Identical consecutive keys (in the middle of the sequence).
+            pts = base[:2] + [base[1]] + base[2:]
+            yield f"{pre}_identical_keys", scene(space, method, pts, samples=65)
+            # All keys identical.
+            yield f"{pre}_all_keys_identical", scene(space, method, [base[0]] * nmin, samples=17)
+            # Keys 1e-9 apart.
+            pts = base[:2] + [near(base[1], 1e-9, space)] + base[2:]
+            yield f"{pre}_keys_1e-9_apart", scene(space, method, pts, samples=65)
+            # Every key 1e-9 from the one before.
+            pts = [near(base[0], 1e-9 * i, space) for i in range(nmin)]
+            yield f"{pre}_all_keys_1e-9_apart", scene(space, method, pts, samples=17)
+            # Neighbours at π − 1e-9 (nearly antipodal on the sphere).
+            p = base[0]
+            q = [-x for x in near(p, 1e-9, space)]
+            pts = [p, q] + [near(q, 0.5 + 0.3 * i, space) for i in range(1, nmin - 1)]
+            yield f"{pre}_near_antipodal_1e-9", scene(space, method, pts, samples=65)
+            # Exactly antipodal neighbours.
+            pts = [p, [-x for x in p]] + base[2:nmin]
+            yield f"{pre}_antipodal", scene(space, method, pts, samples=17)
+            # Three (or more) points on one great circle.
+            pts = [on_circle(space, 0.4 * i) for i in range(nmin + 1)]
+            yield f"{pre}_great_circle", scene(space, method, pts, samples=65)
+            # Parameters at, just inside and just outside the domain.
+            pts = base[: max(nmin, 4)]
+            extra = {}
+            if method in TAKES_KNOTS:
+                n_knots = len(pts) - 2 if method in KNOTS_AT_INNER else len(pts)
+                extra["knots"] = [3.0 * i / (n_knots - 1) for i in range(n_knots)]
+            yield f"{pre}_params_edge", scene(space, method, pts, eval_at=EDGE_PARAMS, **extra)
+            # 10 000 keys: generated by the test itself (robustness.rs), not stored (≈ 15 MB).
+            # Huge and tiny knot spacings.
+            if method in TAKES_KNOTS:
+                pts = base[: max(nmin, 5)]
+                n_knots = len(pts) - 2 if method in KNOTS_AT_INNER else len(pts)
+                mixed = [0.0]
+                for i in range(1, n_knots):
+                    mixed.append(mixed[-1] + (1e-6 if i % 2 else 1e6))
+                yield f"{pre}_knots_mixed_1e-6_1e6", scene(space, method, pts, knots=mixed, samples=257)
+                yield f"{pre}_knots_tiny_1e-6", scene(space, method, pts,
+                                                        knots=[1e-6 * i for i in range(n_knots)], samples=65)
+                yield f"{pre}_knots_huge_1e6", scene(space, method, pts,
+                                                       knots=[1e6 * i for i in range(n_knots)], samples=65)
+                yield f"{pre}_knots_offset_1e9", scene(space, method, pts,
+                                                         knots=[1e9 + i for i in range(n_knots)], samples=65)
+        if "S3" in spaces:
+            base = generic("S3", nmin + 1)
+            pre = f"{m}_s3"
+            # q and −q in one sequence, with and without canonicalisation.
+            pts = base[:2] + [[-x for x in base[1]]] + base[2:]
+            yield f"{pre}_q_and_minus_q", scene("S3", method, pts, samples=65)
+            yield f"{pre}_q_and_minus_q_no_canonicalize", scene("S3", method, pts, canonicalize=False, samples=65)
+            # Every other key negated.
+            pts = [[-x for x in q] if i % 2 else q for i, q in enumerate(base)]
+            yield f"{pre}_alternating_signs", scene("S3", method, pts, samples=65)
+            yield f"{pre}_alternating_signs_no_canonicalize", scene("S3", method, pts, canonicalize=False, samples=65)
+            # Rotations a half turn minus 1e-9 apart (quaternions π/2 − 5e-10 apart), and a half turn.
+            pts = [rot([0, 0, 1], math.pi * k - 1e-9 * k) for k in range(nmin)]
+            yield f"{pre}_half_turn_minus_1e-9", scene("S3", method, pts, samples=65)
+            pts = [rot([1, 1, 0], math.pi * k) for k in range(nmin)]
+            yield f"{pre}_half_turns", scene("S3", method, pts, samples=65)
+            yield f"{pre}_half_turns_no_canonicalize", scene("S3", method, pts, canonicalize=False, samples=65)
+            # Near-antipodal quaternions that canonicalisation turns into near-identical ones.
+            p = base[0]
+            q = [-x for x in near(p, 1e-9, "S3")]
+            pts = [p, q] + base[2:nmin]
+            yield f"{pre}_near_minus_q_canonicalized", scene("S3", method, pts, samples=65)
+
+    # Shape parameters.
+    for space in ALL_SPACES:
+        sp = space.lower()
+        pts = generic(space, 6)
+        for name, params in [
+            ("beta1_1e-9", {"beta1": 1e-9}),
+            ("beta1_1e-300", {"beta1": 1e-300}),
+            ("beta1_1e6", {"beta1": 1e6}),
+            ("beta2_1e6", {"beta2": 1e6}),
+            ("beta2_1e12", {"beta2": 1e12}),
+            ("beta2_0", {"beta2": 0.0}),
+            ("beta1_1e-9_beta2_1e6", {"beta1": 1e-9, "beta2": 1e6}),
+            ("beta1_0", {"beta1": 0.0}),
+            ("beta1_negative", {"beta1": -1.0}),
+            ("beta2_negative", {"beta2": -1.0}),
+            ("beta_approximating_beta1_1e-9", {"beta1": 1e-9, "interpolate": False}),
+            ("beta_approximating_beta2_1e6", {"beta2": 1e6, "interpolate": False}),
+            ("beta1_per_point_extreme", {"beta1": [1e-9, 1e6, 1.0, 1e-9, 1e6, 1.0]}),
+            ("jacobi_beta2_1e6", {"beta2": 1e6, "solver": "jacobi"}),
+        ]:
+            yield f"beta_{sp}_{name}", scene(space, "beta", pts, params=params, samples=129)
+        for label, frac in [("1e-12", 1e-12), ("1e-9", 1e-9), ("0.5", 0.5), ("0.5_plus_1e-12", 0.5 + 1e-12),
+                            ("0", 0.0)]:
+            yield f"corner_blend_{sp}_fraction_{label}", scene(
+                space, "corner-blend", pts, params={"fraction": frac}, samples=129)
+        for order in [1, 10]:
+            yield f"arc_blend_{sp}_order_{order}", scene(space, "arc-blend", pts, params={"order": order}, samples=129)
+            yield f"corner_blend_{sp}_order_{order}", scene(space, "corner-blend", pts, params={"order": order}, samples=129)
+    pts = generic("S3", 7)
+    for name, g in [("gamma_1e-9", 1e-9), ("gamma_1e-300", 1e-300), ("gamma_1e6", 1e6), ("gamma_1e12", 1e12),
+                    ("gamma_0", 0.0), ("gamma_negative", -1.0), ("gamma_per_joint_extreme", [1e-9, 1e6, 1e-9])]:
+        yield f"gamma_s3_{name}", scene("S3", "gamma", pts, params={"gamma": g}, samples=129)
+        yield f"gamma_s3_{name}_paper_example", scene(
+            "S3", "gamma", pts, params={"gamma": g, "last_edge": "paper-example"}, samples=129)
+    # Multi-curve scenes share the checks.
+    yield "compare_s2_identical_keys_every_method", {
+        "space": "S2",
+        "curves": [{"method": m, "points": generic("S2", 5)[:2] + [generic("S2", 5)[1]] + generic("S2", 5)[2:]}
+                   for m, sps in METHODS.items() if "S2" in sps],
+        "samples": 33,
+    }
+
+
+# Methods that need distinct consecutive points (a circle through three points, a corner).
+NEEDS_DISTINCT = ("arc_blend_", "beta_", "corner_blend_")
+ANTIPODAL = "are antipodal: the geodesic between them is not unique"
+COINCIDE = "coincide: this method needs distinct consecutive points"
+NO_CONVERGENCE = "params.solver: the solver did not converge"
+
+
+def expect_err(name):
+    """The substring the error line must contain, or None when the case must succeed."""
+    distinct = name.startswith(NEEDS_DISTINCT)
+    if name.endswith("_q_and_minus_q_no_canonicalize"):
+        return "points[1] and points[2] " + ANTIPODAL
+    if name.endswith("_q_and_minus_q") and distinct:
+        return "points[1] and points[2] " + COINCIDE
+    if name.endswith("_antipodal"):
+        # On S3 canonicalisation turns −q into q.
+        if "_s3_" in name:
+            return "points[0] and points[1] " + COINCIDE if distinct else None
+        return "points[0] and points[1] " + ANTIPODAL
+    if name.endswith("_all_keys_identical") and distinct:
+        return "points[0] and points[1] " + COINCIDE
+    if name.endswith("_identical_keys") and distinct:
+        return "points[1] and points[2] " + COINCIDE
+    # The Beta spline's interpolation solver (beta_solve.rs) does not converge for extreme β₁
+    # or a near-antipodal step: a typed error, documented in ROBUSTNESS.md.
+    if name.startswith("beta_") and "approximating" not in name and "_s3_near_antipodal" not in name and (
+        name.endswith(("_beta1_1e-9", "_beta1_1e-300", "_beta1_1e6", "_beta1_per_point_extreme",
+                       "_near_antipodal_1e-9"))
+    ):
+        return NO_CONVERGENCE
+    if name.endswith(("_beta1_0", "_beta1_negative")):
+        return "params.beta1: must be > 0"
+    if name.endswith("_beta2_negative"):
+        return "params.beta2: must be ≥ 0"
+    if name.endswith(("_fraction_0", "_fraction_0.5_plus_1e-12")):
+        return "params.fraction: must be in (0, 0.5]"
+    if "_gamma_0" in name or "_gamma_negative" in name:
+        return "params.gamma: must be finite and positive"
+    if name == "compare_s2_identical_keys_every_method":
+        return "curves[4].points[1] and points[2] " + COINCIDE
+    return None
+
+
+BAD = "tests/robustness/bad"
+S2 = '"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0],[0,0,1]]'
+S3 = '"space":"S3","method":"squad","points":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]'
+
+
+def bad_cases():
+    """(name, scene text, substring of the one-line error). Plain files, so that other front
+    ends (the wasm crate) can run the same catalog."""
+    deep = "[" * 200 + "]" * 200
+    return [
+        # Not JSON, or not a scene.
+        ("empty_file", "", "invalid scene JSON"),
+        ("whitespace_only", "  \n\t ", "invalid scene JSON"),
+        ("truncated_object", "{" + S2[:40], "invalid scene JSON"),
+        ("truncated_after_points", "{" + S2 + ",", "invalid scene JSON"),
+        ("trailing_garbage", "{" + S2 + "} x", "invalid scene JSON"),
+        ("two_objects", "{" + S2 + "}{" + S2 + "}", "invalid scene JSON"),
+        ("top_level_array", "[" + "{" + S2 + "}]", "invalid scene JSON"),
+        ("top_level_string", '"S2"', "invalid scene JSON"),
+        ("top_level_null", "null", "invalid scene JSON"),
+        ("not_utf8", b"{\"space\":\"S2\xff\"}", "valid UTF-8"),
+        ("bom_prefix", "\ufeff{" + S2 + "}", "invalid scene JSON"),
+        ("comment", "{" + S2 + " // three points\n}", "invalid scene JSON"),
+        ("deeply_nested_points", '{"space":"S2","method":"geodesic","points":' + deep + "}", "invalid type: sequence, expected f64"),
+        ("deeply_nested_view", "{" + S2 + ',"view":' + deep + "}", "recursion limit"),
+        ("deeply_nested_params", "{" + S2 + ',"params":{"a":' + deep + "}}", "recursion limit"),
+        # Missing and unknown fields, wrong types.
+        ("missing_space", '{"method":"geodesic","points":[[1,0,0],[0,1,0]]}', "missing field `space`"),
+        ("missing_method", '{"space":"S2","points":[[1,0,0],[0,1,0]]}', "missing field `method`"),
+        ("missing_points", '{"space":"S2","method":"geodesic"}', "missing field `points`"),
+        ("unknown_field", "{" + S2 + ',"sample":5}', "unknown field `sample`"),
+        ("unknown_method", '{"space":"S2","method":"bspline","points":[[1,0,0],[0,1,0]]}', 'method: unknown method "bspline"'),
+        ("method_wrong_space", '{"space":"S2","method":"squad","points":[[1,0,0],[0,1,0]]}', 'method: "squad" works on S3, not S2'),
+        ("unknown_space", '{"space":"R3","method":"geodesic","points":[[1,0,0],[0,1,0]]}', 'space: "R3" is not a sphere'),
+        ("space_s0", '{"space":"S0","method":"geodesic","points":[[1],[1]]}', 'space: "S0" is not a sphere'),
+        ("space_huge_dimension", '{"space":"S99999999999999999999","method":"geodesic","points":[[1],[1]]}', "is not a sphere"),
+        ("space_number", '{"space":2,"method":"geodesic","points":[[1,0,0],[0,1,0]]}', "invalid type: integer `2`, expected a string"),
+        ("points_not_list", '{"space":"S2","method":"geodesic","points":"[[1,0,0]]"}', "invalid type: string"),
+        ("point_string_coordinate", '{"space":"S2","method":"geodesic","points":[[1,0,0],[0,"1",0]]}', "invalid type: string \"1\", expected f64"),
+        ("point_null_coordinate", '{"space":"S2","method":"geodesic","points":[[1,0,0],[0,null,0]]}', "invalid type: null, expected f64"),
+        ("unknown_param", "{" + S2 + ',"params":{"tension":1}}', 'params.tension: unknown parameter for method "geodesic"'),
+        ("params_not_object", "{" + S2 + ',"params":[1]}', "invalid type: sequence, expected a map"),
+        ("canonicalize_on_s2", "{" + S2 + ',"canonicalize":false}', "canonicalize: applies to S3"),
+        ("canonicalize_string", "{" + S3 + ',"canonicalize":"no"}', "invalid type: string \"no\", expected a boolean"),
+        ("bad_color", "{" + S2 + ',"color":"red"}', 'color: "red" is not a colour'),
+        ("curves_and_method", '{"space":"S2","method":"geodesic","curves":[{"method":"nlerp","points":[[1,0,0],[0,1,0]]}]}', "curves: give either"),
+        ("curves_empty", '{"space":"S2","curves":[]}', "curves: must list at least one curve"),
+        ("curves_bad_point", '{"space":"S2","curves":[{"method":"nlerp","points":[[1,0,0],[0,1,0]]},{"method":"geodesic","points":[[1,0,0],[0,0,0]]}]}', "curves[1].points[1] has zero length"),
+        # `view` is read by the renderer only: `spherekit sample` ignores it (files named render_*).
+        ("render_view_unknown_option", "{" + S2 + ',"view":{"zoom":2}}', "view.zoom: unknown view option"),
+        # Control characters in quoted names (found by fuzzing: the message was two lines).
+        ("unknown_field_with_newline", '{"space":"S2","method":"geodesic","poi\\nts":[[1,0,0],[0,1,0]]}', "unknown field `poi\\nts`"),
+        ("unknown_method_with_newline", '{"space":"S2","method":"geo\\ndesic","points":[[1,0,0],[0,1,0]]}', 'unknown method "geo\\ndesic"'),
+        ("unknown_param_with_control_chars", "{" + S2 + ',"params":{"a\\r\\n\\u001b":1}}', "params.a\\r\\n\\u{1b}: unknown parameter"),
+        ("space_with_newline", '{"space":"S\\n2","method":"geodesic","points":[[1,0,0],[0,1,0]]}', 'space: "S\\n2" is not a sphere'),
+        ("render_view_key_with_newline", "{" + S2 + ',"view":{"cam\\nera":1}}', "view.cam\\nera: unknown view option"),
+        # Non-finite numbers.
+        ("points_nan_literal", '{"space":"S2","method":"geodesic","points":[[1,0,0],[NaN,1,0]]}', "invalid scene JSON"),
+        ("points_infinity_literal", '{"space":"S2","method":"geodesic","points":[[1,0,0],[Infinity,1,0]]}', "invalid scene JSON"),
+        ("points_1e400", '{"space":"S2","method":"geodesic","points":[[1,0,0],[1e400,1,0]]}', "number out of range"),
+        ("knots_1e400", "{" + S2 + ',"knots":[0,1,1e400]}', "number out of range"),
+        ("samples_1e400", "{" + S2 + ',"samples":1e400}', "number out of range"),
+        ("eval_at_1e400", "{" + S2 + ',"eval_at":[0,1e400]}', "number out of range"),
+        ("param_nan_string", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"fraction":"NaN"}}', "params.fraction: must be a finite number"),
+        ("beta1_1e400", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"beta1":1e400}}', "number out of range"),
+        # Points.
+        ("points_empty", '{"space":"S2","method":"geodesic","points":[]}', "needs at least 2 points, got 0"),
+        ("points_one", '{"space":"S2","method":"geodesic","points":[[1,0,0]]}', "needs at least 2 points, got 1"),
+        ("catmull_rom_three_points", '{"space":"S2","method":"catmull-rom","points":[[1,0,0],[0,1,0],[0,0,1]]}', "needs at least 4 points, got 3"),
+        ("points_zero_vector", '{"space":"S2","method":"geodesic","points":[[1,0,0],[0,0,0]]}', "points[1] has zero length"),
+        ("points_subnormal_vector", '{"space":"S2","method":"geodesic","points":[[1,0,0],[1e-320,0,0]]}', "points[1] has zero length"),
+        ("point_too_short", '{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1]]}', "points[1]: has 2 coordinates, S2 points have 3"),
+        ("point_too_long", '{"space":"S3","method":"squad","points":[[1,0,0,0],[0,1,0,0,0]]}', "points[1]: has 5 coordinates, S3 points have 4"),
+        ("points_mixed_lengths", '{"space":"S5","method":"nlerp","points":[[1,0,0,0,0,0],[0,1,0,0,0],[0,0,1,0,0,0,0]]}', "points[1]: has 5 coordinates, S5 points have 6"),
+        ("point_empty", '{"space":"S2","method":"geodesic","points":[[1,0,0],[]]}', "points[1]: has 0 coordinates"),
+        ("antipodal_neighbours", '{"space":"S2","method":"geodesic","points":[[1,0,0],[-1,0,0]]}', "points[0] and points[1] are antipodal"),
+        # Knots.
+        ("knots_not_increasing", "{" + S2 + ',"knots":[0,2,1]}', "knots[2]"),
+        ("knots_repeated", "{" + S2 + ',"knots":[0,1,1]}', "knots[2]"),
+        ("knots_wrong_count", "{" + S2 + ',"knots":[0,1]}', "knots: expected 3 knots, got 2"),
+        ("knots_for_bezier", '{"space":"S2","method":"bezier","points":[[1,0,0],[0,1,0]],"knots":[0,1]}', 'knots: method "bezier" computes its own knots'),
+        # Found by fuzzing (scene_bytes): 1e-96 spacing made |acceleration jumps| overflow.
+        ("knots_spacing_1e-96", '{"space":"S2","method":"catmull-rom","points":[[0.9245181863860598,0.09276122906808075,0.36967753167214523],[0.6578469395012764,0.6773445735480922,0.32930492385288923],[0.06933930854407318,0.9777827086264879,-0.19782071428866735],[-0.5319188672180433,0.7307624041144873,-0.4278418252465374],[-0.9702795301900121,0.23908210989940434,-0.03738151976978039]],"knots":[0.0,1e-96,1000000.000001],"samples":257}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
+        ("knots_spacing_subnormal", "{" + S2 + ',"knots":[0,5e-324,1]}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
+        ("knots_spacing_overflows", "{" + S2 + ',"knots":[-1e308,1e308,1.7e308]}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
+        ("knots_strings", "{" + S2 + ',"knots":["0","1","2"]}', "invalid type: string"),
+        # Sampling.
+        ("samples_zero", "{" + S2 + ',"samples":0}', "samples: must be a whole number from 2 to 1000000, got 0"),
+        ("samples_one", "{" + S2 + ',"samples":1}', "samples: must be a whole number from 2 to 1000000, got 1"),
+        ("samples_negative", "{" + S2 + ',"samples":-5}', "samples: must be a whole number from 2 to 1000000, got -5"),
+        ("samples_fraction", "{" + S2 + ',"samples":2.5}', "samples: must be a whole number from 2 to 1000000, got 2.5"),
+        ("samples_1e12", "{" + S2 + ',"samples":1e12}', "samples: must be a whole number from 2 to 1000000, got 1000000000000"),
+        ("samples_above_limit", "{" + S2 + ',"samples":1000001}', "samples: must be a whole number from 2 to 1000000"),
+        ("samples_times_curves_above_limit", '{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]]},{"method":"nlerp","points":[[1,0,0],[0,1,0]]}],"samples":600000}', "samples: 2 curves × 600000 parameters exceed the limit of 1000000 evaluations per scene"),
+        ("samples_string", "{" + S2 + ',"samples":"10"}', "invalid type: string"),
+        ("samples_and_eval_at", "{" + S2 + ',"samples":5,"eval_at":[0]}', "eval_at: give either samples or eval_at"),
+        ("eval_at_empty", "{" + S2 + ',"eval_at":[]}', "eval_at: must have 1 to 1000000 parameters, got 0"),
+        # Method parameters.
+        ("order_zero", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":0}}', "params.order: must be a whole number from 1 to 10, got 0"),
+        ("order_eleven", '{"space":"S3","method":"corner-blend","points":[[1,0,0,0],[0,1,0,0],[0,0,1,0]],"params":{"order":11}}', "params.order: must be a whole number from 1 to 10, got 11"),
+        ("order_huge", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":1e12}}', "params.order: must be a whole number"),
+        ("order_negative", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":-1}}', "params.order: must be a whole number"),
+        ("fraction_above_half", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"fraction":0.75}}', "params.fraction: must be in (0, 0.5]"),
+        ("gamma_list_wrong_length", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1],[0.6,0.4,0.3,0.1]],"params":{"gamma":[1,2,3,4]}}', "params.gamma: must have one value per interior knot (1), got 4"),
+        ("gamma_string", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"gamma":"1"}}', "params.gamma: must be a number or a list of numbers"),
+        ("beta1_list_wrong_length", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"beta1":[1,2]}}', "params.beta1: must be one number or a list of 3 numbers"),
+        ("beta_tolerance_zero", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"tolerance":0}}', "params.tolerance: must be a positive number"),
+        ("beta_max_iterations_huge", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"max_iterations":1e12}}', "params.max_iterations: must be a whole number from 1 to 1000000"),
+        ("beta_unknown_solver", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"solver":"gauss"}}', "params.solver: must be one of: newton, jacobi"),
+        ("catmull_rom_bad_tangent", '{"space":"S3","method":"catmull-rom","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"tangent":"chordal"}}', "params.tangent: must be one of: quaternion, intrinsic"),
+        ("gamma_last_edge_unknown", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"last_edge":"paper"}}', "params.last_edge: must be one of: formula, paper-example"),
+    ]
+
+
+def main():
+    if os.path.isdir(BAD):
+        shutil.rmtree(BAD)
+    os.makedirs(BAD)
+    for name, text, want in bad_cases():
+        data = text if isinstance(text, bytes) else text.encode()
+        with open(f"{BAD}/{name}.json", "wb") as f:
+            f.write(data)
+        with open(f"{BAD}/{name}.txt", "w") as f:
+            f.write(want + "\n")
+    print(f"{len(bad_cases())} bad scenes in {BAD}")
+
+    if os.path.isdir(OUT):
+        shutil.rmtree(OUT)
+    os.makedirs(OUT)
+    n_ok = n_err = 0
+    for name, s in cases():
+        err = expect_err(name)
+        if err is None:
+            path = f"{OUT}/{name}.ok.json"
+            n_ok += 1
+        else:
+            path = f"{OUT}/{name}.err.json"
+            with open(f"{OUT}/{name}.err.txt", "w") as f:
+                f.write(err + "\n")
+            n_err += 1
+        with open(path, "w") as f:
+            json.dump(s, f, separators=(",", ":"))
+            f.write("\n")
+    print(f"{n_ok} ok, {n_err} err cases in {OUT}")
+
+
+if __name__ == "__main__":
+    main()
