@@ -10,7 +10,7 @@ demo:
     cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- sample examples/orientations.json --deriv
 
 # Everything CI runs, fast checks first
-test: fmt-check lint unit doc
+test: fmt-check lint unit doc test-wasm test-e2e
 
 # Formatting
 fmt-check:
