@@ -294,8 +294,8 @@ function methodSelect(space, value, id) {
     const opt = document.createElement('option');
     opt.value = m.id;
     const fits = m.spaces.split(', ').includes(space) || (m.spaces.includes('S<m>') && space !== 'S3' && space !== 'S2');
-    opt.textContent = m.implemented ? m.id : `${m.id} (not yet)`;
-    opt.disabled = !m.implemented || !fits;
+    opt.textContent = m.implemented !== false ? m.id : `${m.id} (not yet)`;
+    opt.disabled = m.implemented === false || !fits;
     opt.title = `${m.summary} — ${m.spaces}`;
     select.append(opt);
   }
@@ -529,7 +529,7 @@ async function bench() {
     keys.push(Array.from(sk.axis_angle_to_key(40 * k, ...axis)));
   }
   const smooth = ['bspline-kim', 'squad', 'catmull-rom', 'arc-blend', 'geodesic'];
-  const method = smooth.find((id) => state.methods.some((m) => m.id === id && m.implemented && m.spaces.includes('S3')));
+  const method = smooth.find((id) => state.methods.some((m) => m.id === id && m.implemented !== false && m.spaces.includes('S3')));
   const scene = { space: 'S3', method, points: keys, samples: 4000 };
   const pg = new sk.Playground(JSON.stringify(scene));
   const canvas = document.createElement('canvas');

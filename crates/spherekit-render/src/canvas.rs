@@ -146,7 +146,7 @@ impl Canvas {
                 r,
                 vec![
                     GradientStop::new(0.0, Color::from_rgba8(0xf1, 0xf4, 0xf8, 0xff)),
-                    GradientStop::new(0.8, Color::from_rgba8(0xf1, 0xf4, 0xf8, 0xff)),
+                    GradientStop::new(0.88, Color::from_rgba8(0xf1, 0xf4, 0xf8, 0xff)),
                     GradientStop::new(1.0, Color::from_rgba8(0xcd, 0xd5, 0xdf, 0xff)),
                 ],
                 SpreadMode::Pad,

@@ -205,6 +205,7 @@ pub fn view_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<View, RenderError
         scene.view.as_ref(),
         scene.space == Space::S3,
         facing(curves),
+        curves.len() > 1,
     )
 }
 
@@ -326,7 +327,8 @@ fn draw_points<P: Manifold>(
 
 /// A curve on S³ as the trajectories of the tips of its rotated body axes.
 fn draw_rotations(canvas: &mut Canvas, b: &Built<UnitQuat>, color: Rgb, single: bool, view: &View) {
-    for (k, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+    for &k in &view.axes {
+        let axis = [DVec3::X, DVec3::Y, DVec3::Z][k];
         let c = if single { AXIS_COLORS[k] } else { color };
         let f = |t: f64| b.curve.eval(t).rotate(axis);
         let pts = flatten::flatten(&f, b.curve.joints(), 8, view.accuracy);
@@ -366,7 +368,7 @@ fn draw_rotations(canvas: &mut Canvas, b: &Built<UnitQuat>, color: Rgb, single: 
 }
 
 /// Samples the speed of one curve for the plot, piece by piece, with one-sided values at the
-/// joints.
+/// joints, against its parameter mapped to [0, 1].
 fn speed_series(
     joints: &[f64],
     color: Rgb,
@@ -374,6 +376,8 @@ fn speed_series(
     size: u32,
 ) -> plot::SpeedSeries {
     let [t0, t1] = [joints[0], joints[joints.len() - 1]];
+    // The strip shows every curve over its whole domain, mapped to [0, 1].
+    let unit = |t: f64| (t - t0) / (t1 - t0);
     let total = f64::from(size).max(64.0);
     let pieces = joints
         .windows(2)
@@ -396,7 +400,7 @@ fn speed_series(
                     };
                     let side = if i == n { Side::Left } else { Side::Right };
                     let v = speed(t, side);
-                    (t, if v.is_finite() { v } else { 0.0 })
+                    (unit(t), if v.is_finite() { v } else { 0.0 })
                 })
                 .collect()
         })
@@ -404,6 +408,6 @@ fn speed_series(
     plot::SpeedSeries {
         color,
         pieces,
-        joints: joints.to_vec(),
+        joints: joints.iter().map(|&t| unit(t)).collect(),
     }
 }

@@ -14,7 +14,8 @@ pub(crate) struct SpeedSeries {
     pub(crate) joints: Vec<f64>,
 }
 
-/// Draws the strip into `area` (pixels).
+/// Draws the strip into `area` (pixels). Each curve's parameter is mapped to the strip's full
+/// width, so curves with different domains can be compared.
 pub(crate) fn draw(pixmap: &mut Pixmap, area: Rect, scale: f32, series: &[SpeedSeries]) {
     let frame = solid([0xf6, 0xf7, 0xf9], 1.0);
     pixmap.fill_rect(area, &frame, Transform::identity(), None);

@@ -24,7 +24,9 @@ pub enum Plot {
 /// "view": { "camera": [w, x, y, z] | { "yaw": deg, "pitch": deg },   default: see below
 ///           "plot": "speed" | "none",            default "speed" on S3, "none" elsewhere
 ///           "frames": N,                         S3: body triads at N parameters (default 0)
-///           "accuracy": radians }                curve flattening accuracy (default 1e-3)
+///           "accuracy": radians,                 curve flattening accuracy (default 1e-3)
+///           "axes": ["x", "y", "z"] }            S3: the body axes whose tips are traced
+///                                                (default all three for one curve, ["x"] for several)
 /// ```
 ///
 /// Without `camera`, S² scenes are viewed from the direction of the mean of their points (world
@@ -40,6 +42,8 @@ pub struct View {
     pub frames: usize,
     /// Largest angular deviation (radians) of the drawn polyline from the curve.
     pub accuracy: f64,
+    /// Which body axes (0 = x, 1 = y, 2 = z) S³ curves are drawn by.
+    pub axes: Vec<usize>,
 }
 
 /// The default flattening accuracy in radians: a quarter of a pixel at 1 000 px.
@@ -78,6 +82,7 @@ impl View {
         view: Option<&Value>,
         quaternions: bool,
         facing: Option<DVec3>,
+        several: bool,
     ) -> Result<Self, RenderError> {
         let empty = Map::new();
         let map = match view {
@@ -174,11 +179,35 @@ impl View {
                 .filter(|a| (1e-6..=0.1).contains(a))
                 .ok_or_else(|| bad("accuracy", "must be a number of radians from 1e-6 to 0.1"))?,
         };
+        let axes = match map.get("axes") {
+            None if several => vec![0],
+            None => vec![0, 1, 2],
+            Some(v) => {
+                let names = v.as_array().filter(|a| !a.is_empty() && a.len() <= 3);
+                let axes: Option<Vec<usize>> = names.and_then(|a| {
+                    a.iter()
+                        .map(|n| match n.as_str() {
+                            Some("x") => Some(0),
+                            Some("y") => Some(1),
+                            Some("z") => Some(2),
+                            _ => None,
+                        })
+                        .collect()
+                });
+                axes.ok_or_else(|| {
+                    bad("axes", "must be a list of body axes such as [\"x\", \"z\"]")
+                })?
+            }
+        };
+        if !quaternions && map.contains_key("axes") {
+            return Err(bad("axes", "body axes are drawn for S3 scenes only"));
+        }
         Ok(Self {
             camera,
             plot,
             frames,
             accuracy,
+            axes,
         })
     }
 

@@ -7,7 +7,7 @@
 use spherekit_snapshot::golden::{contact_sheet, golden_dir};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let sheet = contact_sheet(5, 160)?;
+    let sheet = contact_sheet(6, 128)?;
     let path = golden_dir().join("contact-sheet.png");
     std::fs::write(&path, spherekit_snapshot::encode_png(&sheet)?)?;
     println!("wrote {}", path.display());

@@ -145,7 +145,8 @@ fn stem(path: &Path) -> String {
 /// The golden directory, `tests/golden/` at the workspace root.
 #[must_use]
 pub fn golden_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/golden")
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/golden");
+    dir.canonicalize().unwrap_or(dir)
 }
 
 /// The names of all golden scenes (the `*.json` files), sorted.

@@ -4,7 +4,7 @@
 //! `spherekit`: sample curves described by JSON scenes.
 //!
 //! ```text
-//! spherekit sample SCENE.json|- [--deriv] [--samples N]
+//! spherekit sample SCENE.json|- [--deriv] [--continuity] [--samples N]
 //! spherekit render SCENE.json|- -o OUT.png [--size N]
 //! spherekit methods
 //! ```
@@ -14,16 +14,18 @@
 use std::io::{Read, Write};
 use std::process::ExitCode;
 
-use spherekit::scene::{Method, Scene};
+use spherekit::scene::{Method, SampleOptions, Scene};
 
 const USAGE: &str = "\
 usage: spherekit <command> [options]
 
 commands:
-  sample SCENE.json [--deriv] [--samples N]
+  sample SCENE.json [--deriv] [--continuity] [--samples N]
       Sample the curve a scene describes and print one JSON object
       (`-` reads the scene from standard input).
       --deriv        also print velocity, acceleration (and angular velocity on S3)
+      --continuity   also print the jumps of point, velocity and acceleration
+                     at every joint (c0, c1, c2)
       --samples N    N uniform samples over the domain (overrides the scene)
   render SCENE.json -o OUT.png [--size N]
       Draw the scene (sphere, curves, speed plot) into a PNG, N pixels wide
@@ -83,13 +85,8 @@ fn run(args: &[String]) -> Result<(), Failure> {
 
 fn methods() {
     for m in Method::ALL {
-        let status = if m.is_implemented() {
-            ""
-        } else {
-            "  (not implemented yet)"
-        };
         println!(
-            "{:<14} {:<14} {}{status}",
+            "{:<14} {:<14} {}",
             m.id(),
             m.support().describe(),
             m.summary()
@@ -112,12 +109,13 @@ fn read_scene(path: &str) -> Result<String, Failure> {
 
 fn sample(args: &[String]) -> Result<(), Failure> {
     let mut path = None;
-    let mut deriv = false;
+    let mut options = SampleOptions::default();
     let mut samples = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
-            "--deriv" => deriv = true,
+            "--deriv" => options.deriv = true,
+            "--continuity" => options.continuity = true,
             "--samples" => {
                 let v = it.next().ok_or_else(|| bad("--samples needs a number"))?;
                 let n: usize = v
@@ -142,7 +140,7 @@ fn sample(args: &[String]) -> Result<(), Failure> {
         })?;
     }
     let curves = scene.build().map_err(|e| bad(e.to_string()))?;
-    let out = scene.sample_json(&curves, deriv);
+    let out = scene.sample_json_with(&curves, options);
     let mut stdout = std::io::stdout().lock();
     serde_json::to_writer(&mut stdout, &out)
         .map_err(std::io::Error::from)

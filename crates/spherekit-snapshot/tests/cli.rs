@@ -367,3 +367,63 @@ fn unknown_commands() {
     }
     assert!(spherekit(&["help"], "").status.success());
 }
+
+#[test]
+fn render_writes_a_png_and_nothing_for_a_bad_scene() {
+    let dir = std::env::temp_dir().join(format!("spherekit-render-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("scene.png");
+    let path = out.to_str().unwrap();
+    let ok = spherekit(&["render", "-", "-o", path, "--size", "64"], S2_SCENE);
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    let png = spherekit_snapshot::decode_png(&std::fs::read(&out).unwrap()).unwrap();
+    assert_eq!((png.width(), png.height()), (64, 64));
+    std::fs::remove_file(&out).unwrap();
+    let cases: &[(&str, &[&str], &str)] = &[
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[-1,0,0]]}"#,
+            &[],
+            "antipodal",
+        ),
+        (
+            S2_SCENE,
+            &["--size", "8"],
+            "size: 8 is outside 16..=4096 pixels",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"view":{"camera":[0,0,0,0]}}"#,
+            &[],
+            "view.camera: quaternion has zero length",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"view":{"zoom":2}}"#,
+            &[],
+            "view.zoom: unknown view option",
+        ),
+        (
+            r#"{"space":"S5","method":"geodesic","points":[[1,0,0,0,0,0],[0,1,0,0,0,0]]}"#,
+            &[],
+            "space: S5 scenes cannot be drawn",
+        ),
+    ];
+    for (scene, extra, expected) in cases {
+        let mut args = vec!["render", "-", "-o", path];
+        args.extend_from_slice(extra);
+        let bad = spherekit(&args, scene);
+        assert_eq!(bad.status.code(), Some(2), "{scene}");
+        let line = String::from_utf8(bad.stderr).unwrap();
+        assert_eq!(line.lines().count(), 1, "{line}");
+        assert!(
+            line.contains(expected),
+            "got `{line}`, expected `{expected}`"
+        );
+        assert!(!out.exists(), "no file is written for a bad scene");
+    }
+    let missing = spherekit(&["render", "-"], S2_SCENE);
+    assert_eq!(missing.status.code(), Some(2));
+    std::fs::remove_dir_all(dir).unwrap();
+}

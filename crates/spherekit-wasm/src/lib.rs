@@ -42,7 +42,7 @@ fn js(e: impl core::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
 }
 
-/// The curve methods as JSON: `[{ "id", "summary", "spaces", "implemented" }, …]`, in the order
+/// The curve methods as JSON: `[{ "id", "summary", "spaces" }, …]`, in the order
 /// `spherekit methods` lists them.
 #[wasm_bindgen]
 #[must_use]
@@ -54,7 +54,6 @@ pub fn methods() -> String {
                 "id": m.id(),
                 "summary": m.summary(),
                 "spaces": m.support().describe(),
-                "implemented": m.is_implemented(),
             })
         })
         .collect();
@@ -805,7 +804,13 @@ impl Playground {
             }
         }
         // The view's options do not depend on the curves (only its default camera does).
-        View::from_json(scene.view.as_ref(), scene.space == Space::S3, None).map_err(js)?;
+        View::from_json(
+            scene.view.as_ref(),
+            scene.space == Space::S3,
+            None,
+            scene.curves.len() > 1,
+        )
+        .map_err(js)?;
         let built = fresh.iter().filter(|c| c.is_some()).count();
         let mut old: Vec<Option<BuiltCurve>> = core::mem::take(&mut self.curves)
             .into_iter()
@@ -834,6 +839,7 @@ fn fallback_view() -> View {
         plot: spherekit_render::Plot::None,
         frames: 0,
         accuracy: spherekit_render::DEFAULT_ACCURACY,
+        axes: vec![0, 1, 2],
     }
 }
 

@@ -59,7 +59,7 @@ impl JointContinuity {
 /// assert_eq!(report[0].order(1e-12), Some(0));
 /// ```
 #[must_use]
-pub fn continuity<C: Curve>(curve: &C) -> Vec<JointContinuity> {
+pub fn continuity<C: Curve + ?Sized>(curve: &C) -> Vec<JointContinuity> {
     let joints = curve.joints();
     if joints.len() < 3 {
         return Vec::new();

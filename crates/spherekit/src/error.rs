@@ -95,6 +95,9 @@ pub enum SplineError {
         /// Index of the first point of the triple.
         index: usize,
     },
+    /// An iterative solver (for example the interpolation solver of
+    /// [`BetaSpline`](crate::BetaSpline)) did not reach its tolerance.
+    Solve(SolveError),
 }
 
 impl fmt::Display for SplineError {
@@ -126,7 +129,7 @@ impl fmt::Display for SplineError {
             Self::KnotCount { expected, got } => {
                 write!(f, "knots: expected {expected} knots, got {got}")
             }
-            Self::InvalidParameter { name, reason } => write!(f, "params.{name} {reason}"),
+            Self::InvalidParameter { name, reason } => write!(f, "params.{name}: {reason}"),
             Self::NoCircle { index } => write!(
                 f,
                 "points[{index}] and points[{}] coincide: no unique circle passes through points[{index}], points[{}] and points[{}]",
@@ -134,8 +137,54 @@ impl fmt::Display for SplineError {
                 index + 1,
                 index + 2
             ),
+            Self::Solve(e) => write!(f, "params.solver: {e}"),
         }
     }
 }
 
-impl core::error::Error for SplineError {}
+impl core::error::Error for SplineError {
+    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
+        match self {
+            Self::Solve(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<SolveError> for SplineError {
+    fn from(e: SolveError) -> Self {
+        Self::Solve(e)
+    }
+}
+
+/// Why an iterative solver gave up.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SolveError {
+    /// The iteration stopped (iteration limit, stalled, or a non-finite or degenerate value)
+    /// without meeting its tolerance; the result would not satisfy the equations.
+    NoConvergence {
+        /// Iterations performed.
+        iterations: usize,
+        /// The residual when it stopped (for interpolation: the largest geodesic distance in
+        /// radians between the curve at a knot and its data point; infinite when it could not
+        /// be evaluated).
+        residual: f64,
+    },
+}
+
+impl fmt::Display for SolveError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NoConvergence {
+                iterations,
+                residual,
+            } => write!(
+                f,
+                "the solver did not converge: residual {residual:.3e} after {iterations} iterations"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for SolveError {}

@@ -69,6 +69,8 @@ pub use glam;
 
 mod ambient;
 mod arc_blend;
+mod beta_solve;
+mod beta_spline;
 mod bezier;
 mod catmull_rom;
 mod circle;
@@ -82,10 +84,6 @@ mod geodesic;
 mod kim;
 mod knots;
 mod manifold;
-#[allow(
-    dead_code,
-    reason = "some helpers are used only by constructions not yet merged"
-)]
 mod math;
 mod rotation;
 mod s2;
@@ -99,13 +97,16 @@ mod squad;
 
 pub use ambient::{Ambient, VecN};
 pub use arc_blend::{ArcBlend, MAX_BLEND_ORDER};
+pub use beta_spline::{
+    BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
+};
 pub use bezier::{Bezier, CubicSegment, cubic_jet, de_casteljau, de_casteljau_jet};
 pub use catmull_rom::CatmullRom;
 pub use circle::CircleArc;
 pub use continuity::{JointContinuity, continuity};
 pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use curve::{Curve, Jet, Side};
-pub use error::{PointError, SplineError};
+pub use error::{PointError, SolveError, SplineError};
 pub use gamma_spline::{GammaJoint, GammaSpline, Gammas, LastEdge};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
 pub use kim::{KimBSpline, KimBezier};

@@ -25,22 +25,6 @@ mod backend {
     pub(crate) fn atan2(y: f64, x: f64) -> f64 {
         libm::atan2(y, x)
     }
-    #[inline]
-    pub(crate) fn exp(x: f64) -> f64 {
-        libm::exp(x)
-    }
-    #[inline]
-    pub(crate) fn ln(x: f64) -> f64 {
-        libm::log(x)
-    }
-    #[inline]
-    pub(crate) fn tan(x: f64) -> f64 {
-        libm::tan(x)
-    }
-    #[inline]
-    pub(crate) fn powi(x: f64, n: i32) -> f64 {
-        libm::pow(x, f64::from(n))
-    }
 }
 
 #[cfg(not(feature = "libm"))]
@@ -61,29 +45,13 @@ mod backend {
     pub(crate) fn atan2(y: f64, x: f64) -> f64 {
         y.atan2(x)
     }
-    #[inline]
-    pub(crate) fn exp(x: f64) -> f64 {
-        x.exp()
-    }
-    #[inline]
-    pub(crate) fn ln(x: f64) -> f64 {
-        x.ln()
-    }
-    #[inline]
-    pub(crate) fn tan(x: f64) -> f64 {
-        x.tan()
-    }
-    #[inline]
-    pub(crate) fn powi(x: f64, n: i32) -> f64 {
-        x.powi(n)
-    }
 }
 
 #[allow(
     unused_imports,
     reason = "not every helper is used by every feature combination"
 )]
-pub(crate) use backend::{atan2, cos, exp, ln, powi, sin, sin_cos, tan};
+pub(crate) use backend::{atan2, cos, sin, sin_cos};
 
 /// Below this angle the series branches of [`sinc`] and [`inv_sinc`] are used.
 const SERIES_THRESHOLD: f64 = 1e-4;
@@ -110,25 +78,13 @@ pub(crate) fn inv_sinc(x: f64) -> f64 {
     }
 }
 
-/// `(1 − cos x)/x²`, with value ½ at 0.
-#[inline]
-pub(crate) fn versinc2(x: f64) -> f64 {
-    if x.abs() < SERIES_THRESHOLD {
-        let x2 = x * x;
-        0.5 - x2 / 24.0
-    } else {
-        let h = sin(0.5 * x) / x;
-        2.0 * h * h
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn series_branches_are_continuous() {
-        for f in [sinc as fn(f64) -> f64, inv_sinc, versinc2] {
+        for f in [sinc as fn(f64) -> f64, inv_sinc] {
             let below = f(SERIES_THRESHOLD * (1.0 - 1e-12));
             let above = f(SERIES_THRESHOLD * (1.0 + 1e-12));
             assert!((below - above).abs() < 1e-15, "{below} vs {above}");
@@ -141,10 +97,6 @@ mod tests {
         assert!(
             (inv_sinc(1.0) - 1.0 / 1f64.sin()).abs() < 1e-15,
             "inv_sinc(1)"
-        );
-        assert!(
-            (versinc2(1.0) - (1.0 - 1f64.cos())).abs() < 1e-15,
-            "versinc2(1)"
         );
         assert!(
             (sinc(1e-6) - (1.0 - 1e-12 / 6.0)).abs() < 1e-18,

@@ -40,9 +40,10 @@ use serde::Deserialize;
 use serde_json::{Map, Value, json};
 
 use crate::{
-    Ambient, ArcBlend, CornerBlend, CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GeodesicSpline,
-    MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, SnPoint, SplineError, UnitQuat,
-    VecN, angular_velocity_acceleration, unflip,
+    Ambient, ArcBlend, BetaParams, BetaSolver, BetaSpline, Bezier, CatmullRom, CornerBlend,
+    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline,
+    KimBezier, LastEdge, MAX_BLEND_ORDER, Manifold, NlerpSpline, PointError, S2Point, ShapeParam,
+    SnPoint, SplineError, Squad, UnitQuat, VecN, angular_velocity_acceleration, unflip,
 };
 
 /// The most samples (or `eval_at` parameters) a scene may ask for.
@@ -69,8 +70,6 @@ pub enum SceneError {
     },
     /// The curve could not be built.
     Spline(SplineError),
-    /// The method id is known but not implemented yet.
-    NotImplemented(Method),
     /// An error in one curve of a scene's `curves` list.
     InCurve {
         /// Index into `curves`.
@@ -86,9 +85,6 @@ impl fmt::Display for SceneError {
             Self::Json(m) => write!(f, "invalid scene JSON: {m}"),
             Self::Field { field, message } => write!(f, "{field}: {message}"),
             Self::Spline(e) => write!(f, "{e}"),
-            Self::NotImplemented(m) => {
-                write!(f, "method: \"{}\" is not implemented yet", m.id())
-            }
             Self::InCurve { index, error } => write!(f, "curves[{index}].{error}"),
         }
     }
@@ -204,8 +200,6 @@ pub enum Support {
     All,
     /// S³ only.
     S3,
-    /// S² and S³.
-    S2S3,
 }
 
 impl Method {
@@ -275,15 +269,6 @@ impl Method {
         }
     }
 
-    /// Whether the method is implemented in this build.
-    #[must_use]
-    pub fn is_implemented(self) -> bool {
-        matches!(
-            self,
-            Self::Geodesic | Self::Nlerp | Self::ArcBlend | Self::CornerBlend
-        )
-    }
-
     /// Parses a method id.
     ///
     /// # Errors
@@ -303,7 +288,6 @@ impl Method {
         match self.support() {
             Support::All => true,
             Support::S3 => space == Space::S3,
-            Support::S2S3 => matches!(space, Space::S2 | Space::S3),
         }
     }
 }
@@ -315,7 +299,6 @@ impl Support {
         match self {
             Self::All => "S2, S3, S<m>",
             Self::S3 => "S3",
-            Self::S2S3 => "S2, S3",
         }
     }
 }
@@ -492,9 +475,6 @@ impl CurveSpec {
     }
 
     fn build(&self, space: Space) -> Result<BuiltCurve, SceneError> {
-        if !self.method.is_implemented() {
-            return Err(SceneError::NotImplemented(self.method));
-        }
         let params = Params::new(self.method, &self.params);
         Ok(match space {
             Space::S2 => BuiltCurve::S2(build_any(self, points(&self.points)?, params)?),
@@ -612,7 +592,7 @@ impl Scene {
     /// # Errors
     ///
     /// [`SceneError::Spline`] when a construction rejects its input, [`SceneError::Field`] for
-    /// bad `params`, [`SceneError::NotImplemented`] for a method not in this build; in a
+    /// bad `params`; in a
     /// multi-curve scene the message is prefixed with `curves[i]`.
     pub fn build(&self) -> Result<Vec<BuiltCurve>, SceneError> {
         self.curves
@@ -651,13 +631,27 @@ impl Scene {
     /// objects without `space`.
     #[must_use]
     pub fn sample_json(&self, curves: &[BuiltCurve], deriv: bool) -> Value {
+        self.sample_json_with(
+            curves,
+            SampleOptions {
+                deriv,
+                continuity: false,
+            },
+        )
+    }
+
+    /// [`sample_json`](Self::sample_json) with every option; `continuity` adds
+    /// `continuity: [{ "t", "c0", "c1", "c2" }, …]`, the jumps of the point and of the first and
+    /// second derivatives at each interior joint (see [`continuity`](crate::continuity)).
+    #[must_use]
+    pub fn sample_json_with(&self, curves: &[BuiltCurve], options: SampleOptions) -> Value {
         let one = |spec: &CurveSpec, curve: &BuiltCurve| {
             let mut out = Map::new();
             out.insert("method".into(), json!(spec.method.id()));
             match curve {
-                BuiltCurve::S2(b) => b.sample_into(self, deriv, &mut out),
-                BuiltCurve::S3(b) => b.sample_into(self, deriv, &mut out),
-                BuiltCurve::Sn(b) => b.sample_into(self, deriv, &mut out),
+                BuiltCurve::S2(b) => b.sample_into(self, options, &mut out),
+                BuiltCurve::S3(b) => b.sample_into(self, options, &mut out),
+                BuiltCurve::Sn(b) => b.sample_into(self, options, &mut out),
             }
             out
         };
@@ -677,6 +671,15 @@ impl Scene {
     }
 }
 
+/// What [`Scene::sample_json_with`] reports besides the points.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SampleOptions {
+    /// Velocity and acceleration (and angular ones on S3).
+    pub deriv: bool,
+    /// Jumps at the joints.
+    pub continuity: bool,
+}
+
 /// A curve built from a scene, with the extras a method derives.
 #[derive(Debug)]
 pub struct Built<P: Manifold> {
@@ -693,6 +696,11 @@ pub struct Built<P: Manifold> {
 }
 
 impl<P: ScenePoint> Built<P> {
+    fn with_controls(mut self, controls: Vec<P>) -> Self {
+        self.controls = controls;
+        self
+    }
+
     fn with_info(mut self, key: &str, value: Value) -> Self {
         self.info.insert(key.into(), value);
         self
@@ -708,7 +716,8 @@ impl<P: ScenePoint> Built<P> {
         }
     }
 
-    fn sample_into(&self, scene: &Scene, deriv: bool, out: &mut Map<String, Value>) {
+    fn sample_into(&self, scene: &Scene, options: SampleOptions, out: &mut Map<String, Value>) {
+        let deriv = options.deriv;
         let domain = self.curve.domain();
         let ts = scene.parameters(domain);
         let mut points = Vec::with_capacity(ts.len());
@@ -750,6 +759,13 @@ impl<P: ScenePoint> Built<P> {
         }
         if !self.info.is_empty() {
             out.insert("info".into(), Value::Object(self.info.clone()));
+        }
+        if options.continuity {
+            let joints: Vec<Value> = crate::continuity(&*self.curve)
+                .iter()
+                .map(|j| json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2 }))
+                .collect();
+            out.insert("continuity".into(), Value::Array(joints));
         }
     }
 }
@@ -832,6 +848,12 @@ fn points<P: ScenePoint>(raw: &[Vec<f64>]) -> Result<Vec<P>, SceneError> {
         .collect()
 }
 
+/// A parameter given as one number for every point or joint, or as a list.
+enum NumberOrList {
+    One(f64),
+    List(Vec<f64>),
+}
+
 /// Typed access to a method's `params`; unknown keys are an error.
 struct Params<'a> {
     method: Method,
@@ -867,43 +889,30 @@ impl<'a> Params<'a> {
         }
     }
 
-    /// One number for every entry, or a list of exactly `len` numbers.
-    fn numbers(
-        &mut self,
-        name: &'static str,
-        default: f64,
-        len: usize,
-    ) -> Result<Vec<f64>, SceneError> {
+    /// A number, a list of numbers, or absent (`None`). Ranges and list lengths are checked by
+    /// the construction, which knows them.
+    fn number_or_list(&mut self, name: &'static str) -> Result<Option<NumberOrList>, SceneError> {
         match self.get(name) {
-            None => Ok(vec![default; len]),
-            Some(Value::Array(a)) => {
-                if a.len() != len {
-                    return Err(field_error(
-                        format!("params.{name}"),
-                        format!(
-                            "must be one number or a list of {len}, got a list of {}",
-                            a.len()
-                        ),
-                    ));
-                }
-                a.iter()
-                    .enumerate()
-                    .map(|(i, v)| {
-                        v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
-                            field_error(format!("params.{name}[{i}]"), "must be a finite number")
-                        })
+            None => Ok(None),
+            Some(Value::Array(a)) => a
+                .iter()
+                .enumerate()
+                .map(|(i, v)| {
+                    v.as_f64().ok_or_else(|| {
+                        field_error(format!("params.{name}[{i}]"), "must be a number")
                     })
-                    .collect()
-            }
-            Some(v) => {
-                let x = v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                })
+                .collect::<Result<_, _>>()
+                .map(|list| Some(NumberOrList::List(list))),
+            Some(v) => v
+                .as_f64()
+                .map(|x| Some(NumberOrList::One(x)))
+                .ok_or_else(|| {
                     field_error(
                         format!("params.{name}"),
-                        "must be a finite number or a list",
+                        "must be a number or a list of numbers",
                     )
-                })?;
-                Ok(vec![x; len])
-            }
+                }),
         }
     }
 
@@ -987,6 +996,72 @@ fn build_any<P: ScenePoint>(
             params.finish()?;
             Built::new(NlerpSpline::try_new(points.clone(), knots)?, points)
         }
+        Method::Bezier => {
+            params.finish()?;
+            no_knots(spec)?;
+            Built::new(Bezier::try_new(points.clone())?, points)
+        }
+        Method::CatmullRom => {
+            params.finish()?;
+            let curve = CatmullRom::try_new(points.clone(), knots)?;
+            let controls = curve.controls().to_vec();
+            Built::new(curve, points).with_controls(controls)
+        }
+        Method::Beta => {
+            no_knots(spec)?;
+            let shape = |params: &mut Params<'_>, name: &'static str, default: f64| {
+                Ok::<_, SceneError>(match params.number_or_list(name)? {
+                    None => ShapeParam::Constant(default),
+                    Some(NumberOrList::One(x)) => ShapeParam::Constant(x),
+                    Some(NumberOrList::List(v)) => ShapeParam::PerPoint(v),
+                })
+            };
+            let positive = |params: &mut Params<'_>, name: &'static str| match params.get(name) {
+                None => Ok(None),
+                Some(v) => v
+                    .as_f64()
+                    .filter(|x| x.is_finite() && *x > 0.0)
+                    .map(Some)
+                    .ok_or_else(|| {
+                        field_error(format!("params.{name}"), "must be a positive number")
+                    }),
+            };
+            let beta = BetaParams {
+                beta1: shape(&mut params, "beta1", 1.0)?,
+                beta2: shape(&mut params, "beta2", 0.0)?,
+                interpolate: params.boolean("interpolate", true)?,
+                solver: BetaSolver::from_name(params.choice("solver", &["newton", "jacobi"])?)
+                    .unwrap_or_default(),
+                tolerance: positive(&mut params, "tolerance")?,
+                residual_tolerance: positive(&mut params, "residual_tolerance")?,
+                max_iterations: match params.get("max_iterations") {
+                    None => None,
+                    Some(v) => Some(
+                        v.as_u64()
+                            .filter(|n| (1..=1_000_000).contains(n))
+                            .and_then(|n| usize::try_from(n).ok())
+                            .ok_or_else(|| {
+                                field_error(
+                                    "params.max_iterations",
+                                    "must be a whole number from 1 to 1000000",
+                                )
+                            })?,
+                    ),
+                },
+            };
+            params.finish()?;
+            let curve = BetaSpline::try_new(points.clone(), &beta)?;
+            let mut built =
+                Built::new(curve.clone(), points).with_controls(curve.controls().to_vec());
+            built.auxiliary = curve.auxiliary().to_vec();
+            if let Some(info) = curve.solve_info() {
+                built = built
+                    .with_info("solver", json!(info.solver.name()))
+                    .with_info("iterations", json!(info.iterations))
+                    .with_info("residual", json!(info.residual));
+            }
+            built
+        }
         Method::ArcBlend => {
             let order = params.order()?;
             params.finish()?;
@@ -1004,7 +1079,13 @@ fn build_any<P: ScenePoint>(
             let knots = curve.knots().to_vec();
             Built::new(curve, points).with_info("knots", json!(knots))
         }
-        m => return Err(SceneError::NotImplemented(m)),
+        // Unreachable: `CurveSpec::validate` checks the method's spaces.
+        m => {
+            return Err(field_error(
+                "method",
+                format!("\"{}\" is not available on this sphere", m.id()),
+            ));
+        }
     })
 }
 
@@ -1014,7 +1095,52 @@ fn build_s3(
     keys: Vec<UnitQuat>,
     mut params: Params<'_>,
 ) -> Result<Built<UnitQuat>, SceneError> {
+    let knots = spec.knots.clone();
     Ok(match spec.method {
+        Method::BezierKim => {
+            params.finish()?;
+            no_knots(spec)?;
+            Built::new(KimBezier::try_new(keys.clone())?, keys)
+        }
+        Method::BsplineKim => {
+            params.finish()?;
+            no_knots(spec)?;
+            Built::new(KimBSpline::try_new(keys.clone())?, keys)
+        }
+        Method::Squad => {
+            params.finish()?;
+            let curve = Squad::try_new(keys.clone(), knots)?;
+            let controls = curve.controls().to_vec();
+            Built::new(curve, keys).with_controls(controls)
+        }
+        Method::CatmullRom => {
+            let tangent = params.choice("tangent", &["quaternion", "intrinsic"])?;
+            params.finish()?;
+            let curve = if tangent == "quaternion" {
+                CatmullRom::try_new_quaternion(keys.clone(), knots)?
+            } else {
+                CatmullRom::try_new(keys.clone(), knots)?
+            };
+            let controls = curve.controls().to_vec();
+            Built::new(curve, keys).with_controls(controls)
+        }
+        Method::Gamma => {
+            let gamma = match params.number_or_list("gamma")? {
+                None => Gammas::All(1.0),
+                Some(NumberOrList::One(x)) => Gammas::All(x),
+                Some(NumberOrList::List(v)) => Gammas::Each(v),
+            };
+            let last_edge =
+                LastEdge::from_name(params.choice("last_edge", &["formula", "paper-example"])?)?;
+            params.finish()?;
+            let curve = GammaSpline::try_new(keys.clone(), knots, gamma, last_edge)?;
+            let controls = curve.controls().to_vec();
+            let report = curve.joint_report();
+            Built::new(curve, keys).with_controls(controls).with_info(
+                "joints",
+                serde_json::to_value(report).unwrap_or(Value::Null),
+            )
+        }
         Method::CornerBlend => {
             // The book's orientation construction (rotations act by left multiplication).
             let order = params.order()?;

@@ -5,57 +5,13 @@
 
 #![allow(clippy::unwrap_used, reason = "tests: a panic is the failure report")]
 
+mod support;
+
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     Curve, GammaSpline, Gammas, KimBezier, LastEdge, Manifold, Side, SplineError, UnitQuat,
 };
-
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-    fn quat(&mut self) -> UnitQuat {
-        UnitQuat::from_wxyz([
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-        ])
-        .unwrap()
-    }
-    /// Vertices with consecutive steps of at most `step` radians (no antipodal neighbours).
-    fn chain(&mut self, n: usize, step: f64) -> Vec<UnitQuat> {
-        let mut q = vec![self.quat()];
-        for _ in 1..n {
-            let v = DVec3::new(
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            );
-            let v = v.normalize() * self.range(0.1, step);
-            let last = *q.last().unwrap();
-            q.push(last.mul(UnitQuat::exp(v)));
-        }
-        q
-    }
-    /// Increasing knots with spacings in `[0.5, 2]`.
-    fn knots(&mut self, l: usize) -> Vec<f64> {
-        let mut u = vec![self.range(-1.0, 1.0)];
-        for _ in 0..l {
-            let d = self.range(0.5, 2.0);
-            u.push(u.last().unwrap() + d);
-        }
-        u
-    }
-}
+use support::Rng;
 
 fn q(wxyz: [f64; 4]) -> UnitQuat {
     UnitQuat::from_wxyz(wxyz).unwrap()
@@ -514,7 +470,7 @@ fn bad_input_is_a_typed_error() {
             matches!(e, SplineError::InvalidParameter { name: "gamma", .. }),
             "{g:?}: {e}"
         );
-        assert!(e.to_string().starts_with("params.gamma "), "{e}");
+        assert!(e.to_string().starts_with("params.gamma: "), "{e}");
     }
     // A scalar γ is validated even when there are no interior knots.
     assert!(matches!(

@@ -5,50 +5,14 @@
 
 #![allow(clippy::unwrap_used, reason = "tests: a panic is the failure report")]
 
+mod support;
+
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     Curve, KimBSpline, KimBezier, Manifold, Side, SplineError, UnitQuat,
     angular_velocity_acceleration,
 };
-
-/// A small deterministic generator (xorshift) for test data.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-    fn quat(&mut self) -> UnitQuat {
-        UnitQuat::from_wxyz([
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-        ])
-        .unwrap()
-    }
-    /// A chain of controls with consecutive steps of at most `step` radians on S³.
-    fn chain(&mut self, n: usize, step: f64) -> Vec<UnitQuat> {
-        let mut q = vec![self.quat()];
-        for _ in 1..n {
-            let v = DVec3::new(
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            );
-            let v = v.normalize() * self.range(0.05, step);
-            let last = *q.last().unwrap();
-            q.push(last.mul(UnitQuat::exp(v)));
-        }
-        q
-    }
-}
+use support::Rng;
 
 fn v4(q: UnitQuat) -> DVec4 {
     q.to_vector()

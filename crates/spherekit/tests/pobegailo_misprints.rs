@@ -5,6 +5,13 @@
 //! corrected form (used by the library) satisfies. The w₂,₂ and (8.21)/(9.20) cases are in
 //! `pobegailo_s2.rs` / `pobegailo_s3.rs`.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::missing_assert_message,
+    clippy::cast_possible_truncation,
+    reason = "tests: a panic is the failure report"
+)]
+
 use core::f64::consts::PI;
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
@@ -69,7 +76,7 @@ fn printed_knot_recurrence_breaks_continuity() {
     assert!(jump > 1e-2, "printed knots: velocity jump {jump}");
 }
 
-/// §7.10's prose calls the backward circle (through p_{i−1}, p_i, p_{i+1}) the "first" one; with
+/// §7.10's prose calls the backward circle (through `p_{i−1}, p_i, p_{i+1}`) the "first" one; with
 /// it under w₁,ₙ the segment ends following the wrong circle and the joint is not even C¹.
 #[test]
 fn printed_circle_order_breaks_continuity() {

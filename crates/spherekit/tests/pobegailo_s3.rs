@@ -4,16 +4,23 @@
 //! Pobegailo's orientation circles, arc-blend splines and corner smoothing on S³
 //! (spec `pobegailo-s3.md`).
 
-mod pobegailo_common;
+#![allow(
+    clippy::unwrap_used,
+    clippy::missing_assert_message,
+    clippy::cast_possible_truncation,
+    reason = "tests: a panic is the failure report"
+)]
+
+mod support;
 
 use core::f64::consts::PI;
 
-use pobegailo_common::{Rng, check_continuity, check_derivatives};
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     ArcBlend, CircleArc, CornerBlend, CornerBlendS3, Curve, Manifold, Side, SmoothingPolynomials,
     SplineError, UnitQuat, angular_velocity_acceleration,
 };
+use support::{Rng, check_continuity, check_derivatives};
 
 fn q(w: f64, x: f64, y: f64, z: f64) -> UnitQuat {
     UnitQuat::from_wxyz([w, x, y, z]).unwrap()

@@ -5,6 +5,13 @@
 //! `cargo test --release --test pobegailo_timing -- --ignored --nocapture`); criterion benches
 //! come later.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::missing_assert_message,
+    clippy::cast_possible_truncation,
+    reason = "tests: a panic is the failure report"
+)]
+
 use std::time::Instant;
 
 use spherekit::glam::DVec3;

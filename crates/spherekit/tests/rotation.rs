@@ -4,67 +4,15 @@
 //! Rotation conversions: the identities of the foundations spec §5 (items 10–19, 24), the
 //! book's golden values that are correct, and one negative test per corrected misprint.
 
+mod support;
+
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_8, PI, SQRT_2};
+use support::Rng;
 
 use spherekit::glam::{DMat3, DQuat, DVec3};
 use spherekit::{
     ROTATION_TOLERANCE, RotationError, UnitQuat, rodrigues_compose, rotation_matrix_from_rodrigues,
 };
-
-/// xorshift64*: a small deterministic generator, no dependency.
-struct Rng(u64);
-
-impl Rng {
-    fn new(seed: u64) -> Self {
-        Self(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
-    }
-
-    /// Uniform in [0, 1).
-    fn uniform(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let x = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.uniform()
-    }
-
-    fn vec3(&mut self, scale: f64) -> DVec3 {
-        DVec3::new(
-            self.range(-scale, scale),
-            self.range(-scale, scale),
-            self.range(-scale, scale),
-        )
-    }
-
-    fn unit3(&mut self) -> DVec3 {
-        loop {
-            let v = self.vec3(1.0);
-            let l = v.length();
-            if l > 0.1 && l <= 1.0 {
-                return v / l;
-            }
-        }
-    }
-
-    fn quat(&mut self) -> UnitQuat {
-        loop {
-            let v = [
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            ];
-            let l2: f64 = v.iter().map(|a| a * a).sum();
-            if l2 > 0.01 && l2 <= 1.0 {
-                return UnitQuat::from_wxyz(v).expect("non-zero finite 4-vector");
-            }
-        }
-    }
-}
 
 const TRIALS: usize = 500;
 
