@@ -74,7 +74,11 @@ function redraw() {
 function drawNow() {
   const canvas = $('scene');
   fit();
-  attempt(() => state.pg.draw(canvas, state.size));
+  try {
+    state.pg.draw(canvas, state.size);
+  } catch (e) {
+    showError(e.message); // a drawing failure; a good draw leaves an edit's message alone
+  }
   const css = (px) => `${px / state.dpr}px`;
   canvas.style.width = css(canvas.width);
   canvas.style.height = css(canvas.height);
@@ -138,10 +142,26 @@ function rotate(q, axis) {
 function changed({ panels = true } = {}) {
   const text = state.pg.scene_json();
   history.replaceState(null, '', `${location.pathname}${location.search}#scene=${encodeURIComponent(text)}`);
-  if (document.activeElement !== $('json')) $('json').value = JSON.stringify(JSON.parse(text), null, 1);
+  if (document.activeElement !== $('json')) $('json').value = pretty(text);
+  const preset = state.presets.find((p) => p.scene.trim() === text || sameScene(p.scene, text));
+  $('preset').value = preset ? preset.name : '';
   if (panels) renderPanels();
   renderContinuity();
   redraw();
+}
+
+/** Indented JSON with each list of numbers on one line. */
+function pretty(text) {
+  return JSON.stringify(JSON.parse(text), null, 2)
+    .replace(/\[\s*(-?[\d.e+-]+(?:,\s*-?[\d.e+-]+)*)\s*\]/g, (_, xs) => `[${xs.split(/,\s*/).join(', ')}]`);
+}
+
+function sameScene(a, b) {
+  try {
+    return JSON.stringify(JSON.parse(a)) === JSON.stringify(JSON.parse(b));
+  } catch {
+    return false;
+  }
 }
 
 function loadScene(text, { keepOnError = true } = {}) {
@@ -514,7 +534,7 @@ function tick(now) {
 
 function setPlaying(on) {
   state.playing = on;
-  $('play').textContent = on ? '⏸ Pause' : '▶ Play';
+  $('play').textContent = on ? '■ Pause' : '▶ Play';
   lastTick = 0;
   if (on) requestAnimationFrame(tick);
 }
@@ -584,6 +604,11 @@ async function main() {
   state.methods = JSON.parse(sk.methods());
   state.presets = JSON.parse(sk.presets());
   const preset = $('preset');
+  const custom = document.createElement('option');
+  custom.value = '';
+  custom.textContent = '(your scene)';
+  custom.disabled = true;
+  preset.append(custom);
   for (const p of state.presets) {
     const opt = document.createElement('option');
     opt.value = p.name;
@@ -597,9 +622,6 @@ async function main() {
     const error = $('error').textContent;
     loadScene(fallback.scene);
     if (fromHash) showError(error.replace(/^error: /, ''));
-    preset.value = fallback.name;
-  } else {
-    preset.value = '';
   }
 
   preset.addEventListener('change', () => {
@@ -612,7 +634,7 @@ async function main() {
   });
   $('apply-json').addEventListener('click', () => loadScene($('json').value));
   $('download').addEventListener('click', () => {
-    const blob = new Blob([JSON.stringify(JSON.parse(state.pg.scene_json()), null, 2) + '\n'], { type: 'application/json' });
+    const blob = new Blob([pretty(state.pg.scene_json()) + '\n'], { type: 'application/json' });
     const a = document.createElement('a');
     a.href = URL.createObjectURL(blob);
     a.download = 'scene.json';
