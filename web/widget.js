@@ -143,7 +143,7 @@ export async function mount(element, scene, { size = 260 } = {}) {
   };
   play.addEventListener('click', () => {
     playing = !playing;
-    play.textContent = playing ? '⏸' : '▶';
+    play.textContent = playing ? '■' : '▶';
     play.title = playing ? 'Pause' : 'Play';
     last = 0;
     if (playing) requestAnimationFrame(tick);
