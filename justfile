@@ -10,7 +10,7 @@ demo:
     cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- sample examples/orientations.json --deriv
 
 # Everything CI runs, fast checks first
-test: fmt-check lint unit doc
+test: fmt-check lint unit doc test-wasm test-e2e
 
 # Formatting
 fmt-check:
@@ -76,3 +76,27 @@ fuzz seconds="600" target="all":
         cargo fuzz run -O --sanitizer "$sanitizer" "$t" "fuzz/corpus/$t" -- \
             -max_total_time={{seconds}} -max_len=4096 -timeout=20 -rss_limit_mb=3072 "${extra[@]}"
     done
+
+# ---- web: wasm bindings, playground, docs widget -------------------------------------------
+
+# Build the wasm package into web/pkg (installs wasm-pack, wasm-bindgen, wasm-opt when missing)
+web:
+    CARGO_PROFILE_RELEASE_OPT_LEVEL=z CARGO_PROFILE_RELEASE_LTO=true CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1 \
+    CARGO_PROFILE_RELEASE_PANIC=abort bash scripts/setup-web.sh wasm-pack build crates/spherekit-wasm --release --target web --out-dir ../../web/pkg --no-typescript --no-pack
+
+# Build, then serve the playground on http://127.0.0.1:8000/ (docs widget: /docs.html)
+serve port="8000": web
+    @echo "spherekit playground: http://127.0.0.1:{{port}}/  (method gallery: /docs.html)"
+    python3 -m http.server {{port}} --bind 127.0.0.1 --directory web
+
+# wasm-bindgen-test tests of the wasm API, under node
+test-wasm:
+    bash scripts/setup-web.sh cargo test -p spherekit-wasm --target wasm32-unknown-unknown --locked
+
+# End-to-end browser test of the playground and docs page in headless Chromium
+test-e2e: web
+    bash scripts/setup-web.sh --e2e node tests/e2e/run.mjs
+
+# Size of the release .wasm (budget 600 KiB)
+wasm-size: web
+    @bytes=$(stat -c %s web/pkg/spherekit_wasm_bg.wasm); echo "web/pkg/spherekit_wasm_bg.wasm: $bytes bytes ($((bytes / 1024)) KiB, budget 600 KiB)"; test "$bytes" -le 614400

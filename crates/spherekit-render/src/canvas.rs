@@ -59,9 +59,10 @@ impl Canvas {
         let s = f64::from(size);
         #[expect(clippy::cast_possible_truncation, reason = "pixel scale")]
         let scale = (s / 512.0) as f32;
+        let (c, radius) = crate::view::sphere_frame(size);
         Self {
-            center: (0.5 * s, 0.5 * s),
-            radius: 0.45 * s,
+            center: (c, c),
+            radius,
             scale,
             axes,
             back: Vec::new(),

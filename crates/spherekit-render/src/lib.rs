@@ -133,12 +133,7 @@ pub fn render_built(
     if matches!(scene.space, Space::Sn(m) if m != 1) {
         return Err(RenderError::Space(scene.space.name()));
     }
-    let view = View::from_json(
-        scene.view.as_ref(),
-        scene.space == Space::S3,
-        facing(curves),
-        curves.len() > 1,
-    )?;
+    let view = view_of(scene, curves)?;
     let strip = if view.plot == Plot::Speed {
         size / 4
     } else {
@@ -185,6 +180,21 @@ pub fn render_built(
         }
     }
     Ok(pixmap)
+}
+
+/// The view [`render_built`] draws `curves` of `scene` with (its default camera depends on the
+/// points), so an interactive caller can project and pick what it shows.
+///
+/// # Errors
+///
+/// [`RenderError::View`] for a bad `view`.
+pub fn view_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<View, RenderError> {
+    View::from_json(
+        scene.view.as_ref(),
+        scene.space == Space::S3,
+        facing(curves),
+        curves.len() > 1,
+    )
 }
 
 /// The mean of the input points of curves on S² or S¹, for the default camera.

@@ -211,6 +211,30 @@ impl View {
         })
     }
 
+    /// Pixel position `[x, y]` and depth (positive towards the viewer) of a point of ℝ³ in an
+    /// image `size` pixels wide, as the renderer draws it.
+    #[must_use]
+    pub fn project(&self, p: DVec3, size: u32) -> [f64; 3] {
+        let [r, u, z] = self.axes();
+        let (c, radius) = sphere_frame(size);
+        [c + radius * p.dot(r), c - radius * p.dot(u), p.dot(z)]
+    }
+
+    /// The point of the sphere's visible hemisphere drawn at pixel `[x, y]` (the inverse of
+    /// [`View::project`]); a pixel outside the disc gives the nearest point of the rim.
+    #[must_use]
+    pub fn unproject(&self, x: f64, y: f64, size: u32) -> DVec3 {
+        let [r, u, z] = self.axes();
+        let (c, radius) = sphere_frame(size);
+        let (dx, dy) = ((x - c) / radius, (c - y) / radius);
+        let d2 = dx * dx + dy * dy;
+        if d2 >= 1.0 {
+            let d = d2.sqrt();
+            return r * (dx / d) + u * (dy / d);
+        }
+        r * dx + u * dy + z * (1.0 - d2).sqrt()
+    }
+
     /// The camera's screen axes in world coordinates: right, up, and towards the viewer.
     #[must_use]
     pub fn axes(&self) -> [DVec3; 3] {
@@ -220,6 +244,12 @@ impl View {
             self.camera.rotate(DVec3::Z),
         ]
     }
+}
+
+/// The sphere's centre (on both axes) and radius in pixels in an image `size` pixels wide.
+pub(crate) fn sphere_frame(size: u32) -> (f64, f64) {
+    let s = f64::from(size);
+    (0.5 * s, 0.45 * s)
 }
 
 impl RenderError {

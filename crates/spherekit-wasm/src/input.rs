@@ -1,0 +1,111 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Checks of what the page passes in that the scene format does not see: indices, coordinate
+//! arrays, field names.
+
+use core::fmt;
+
+use serde_json::Value;
+use spherekit::UnitQuat;
+use spherekit::scene::MAX_DIMENSION;
+
+/// A bad argument from the page (the scene's own errors are [`spherekit::scene::SceneError`]).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum InputError {
+    /// There is no curve with this index.
+    NoCurve(usize),
+    /// There is no point with this index.
+    NoPoint(usize),
+    /// The last curve of a scene cannot be removed.
+    LastCurve,
+    /// Coordinates are not finite or have the wrong count.
+    Coords(String),
+    /// A JSON argument could not be read.
+    Json(String),
+    /// The sample output has no such field.
+    Field(String),
+    /// The canvas has no 2D context or refused the image.
+    NoContext,
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NoCurve(i) => write!(f, "curves[{i}]: there is no such curve"),
+            Self::NoPoint(i) => write!(f, "points[{i}]: there is no such point"),
+            Self::LastCurve => write!(f, "curves: the last curve cannot be removed"),
+            Self::Coords(m) => write!(f, "coordinates: {m}"),
+            Self::Json(m) => write!(f, "invalid JSON: {m}"),
+            Self::Field(name) => write!(
+                f,
+                "field \"{name}\" is not a sample field (t, points, velocity, acceleration, \
+                 angular_velocity, angular_acceleration, controls, auxiliary, domain)"
+            ),
+            Self::NoContext => write!(f, "canvas: no 2D context"),
+        }
+    }
+}
+
+impl core::error::Error for InputError {}
+
+/// Coordinates of a new point as a JSON list (the scene checks their count and length).
+pub(crate) fn point_value(coords: &[f64]) -> Result<Value, InputError> {
+    if coords.is_empty() || coords.len() > MAX_DIMENSION + 1 {
+        return Err(InputError::Coords(format!(
+            "expected 2 to {} numbers, got {}",
+            MAX_DIMENSION + 1,
+            coords.len()
+        )));
+    }
+    if let Some(i) = coords.iter().position(|x| !x.is_finite()) {
+        return Err(InputError::Coords(format!("[{i}] is not a finite number")));
+    }
+    Ok(Value::from(coords.to_vec()))
+}
+
+/// A unit quaternion from `[w, x, y, z]`.
+pub(crate) fn quat(c: &[f64]) -> Result<UnitQuat, InputError> {
+    match c {
+        &[w, x, y, z] => UnitQuat::from_wxyz([w, x, y, z])
+            .map_err(|e| InputError::Coords(format!("quaternion {e}"))),
+        _ => Err(InputError::Coords(format!(
+            "a quaternion has 4 numbers [w, x, y, z], got {}",
+            c.len()
+        ))),
+    }
+}
+
+/// One field of a curve's sample output, flattened row by row.
+pub(crate) fn flatten_field(one: &Value, field: &str) -> Result<Vec<f64>, InputError> {
+    const FIELDS: [&str; 9] = [
+        "t",
+        "points",
+        "velocity",
+        "acceleration",
+        "angular_velocity",
+        "angular_acceleration",
+        "controls",
+        "auxiliary",
+        "domain",
+    ];
+    if !FIELDS.contains(&field) {
+        return Err(InputError::Field(field.into()));
+    }
+    let mut out = Vec::new();
+    let mut push = |v: &Value| {
+        if let Some(x) = v.as_f64() {
+            out.push(x);
+        }
+    };
+    if let Some(Value::Array(rows)) = one.get(field) {
+        for row in rows {
+            match row {
+                Value::Array(xs) => xs.iter().for_each(&mut push),
+                v => push(v),
+            }
+        }
+    }
+    Ok(out)
+}

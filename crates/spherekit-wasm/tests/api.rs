@@ -1,0 +1,141 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! wasm-bindgen tests of the JS-facing API, run under node by `just test-wasm`.
+
+#![cfg(target_arch = "wasm32")]
+
+use spherekit_wasm::{
+    Playground, continuity, methods, render_rgba, sample, sample_array, validate,
+};
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::wasm_bindgen_test;
+
+const S2: &str =
+    r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0],[0,0,1]],"samples":5}"#;
+const S3: &str = r#"{"space":"S3","method":"squad","points":[[1,0,0,0],[0.9239,0,0,0.3827],[0.7071,0.5,0.5,0],[0.5,-0.5,0.5,0.5]]}"#;
+
+fn message(e: wasm_bindgen::JsError) -> String {
+    let v: JsValue = e.into();
+    js_sys::Reflect::get(&v, &"message".into())
+        .ok()
+        .and_then(|m| m.as_string())
+        .unwrap_or_default()
+}
+
+#[wasm_bindgen_test]
+fn methods_lists_every_method() {
+    let list: serde_json::Value = serde_json::from_str(&methods()).unwrap();
+    let ids: Vec<&str> = list
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m["id"].as_str().unwrap())
+        .collect();
+    let expected: Vec<&str> = spherekit::scene::Method::ALL
+        .iter()
+        .map(|m| m.id())
+        .collect();
+    assert_eq!(ids, expected, "the same list as Method::ALL");
+}
+
+#[wasm_bindgen_test]
+fn sample_matches_the_cli_output() {
+    let out: serde_json::Value = serde_json::from_str(&sample(S2, false).unwrap()).unwrap();
+    let scene = spherekit::scene::Scene::from_json(S2).unwrap();
+    assert_eq!(
+        out,
+        scene.sample_json(&scene.build().unwrap(), false),
+        "same JSON as the CLI"
+    );
+    let points = sample_array(S2, 0, "points").unwrap();
+    assert_eq!(points.len(), 15, "5 samples × 3 coordinates");
+    let omega = sample_array(S3, 0, "angular_velocity").unwrap();
+    assert_eq!(omega.len() % 3, 0, "rows of 3");
+    assert!(!omega.is_empty(), "S3 has angular velocity");
+}
+
+#[wasm_bindgen_test]
+fn bad_input_gives_the_cli_message() {
+    let bad = r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,0,0]]}"#;
+    assert_eq!(
+        message(validate(bad).unwrap_err()),
+        "points[1] has zero length and cannot be normalised"
+    );
+    assert!(
+        message(sample("{", false).unwrap_err()).starts_with("invalid scene JSON: "),
+        "JSON error"
+    );
+    assert!(
+        message(render_rgba(S2, 3).unwrap_err()).starts_with("size: 3 is outside"),
+        "size error"
+    );
+    assert!(
+        message(sample_array(S2, 4, "points").unwrap_err()).contains("curves[4]"),
+        "curve index"
+    );
+}
+
+#[wasm_bindgen_test]
+fn continuity_reports_the_joints() {
+    let report: serde_json::Value = serde_json::from_str(&continuity(S2).unwrap()).unwrap();
+    let joint = &report[0][0];
+    assert_eq!(joint["t"], 1.0, "one interior joint");
+    assert_eq!(joint["order"], 0, "a geodesic polyline is C0 only");
+}
+
+#[wasm_bindgen_test]
+fn render_has_the_plot_strip_on_s3() {
+    let rgba = render_rgba(S3, 64).unwrap();
+    assert_eq!(rgba.len(), 64 * (64 + 16) * 4, "S3 has the plot strip");
+    assert!(rgba.chunks(4).all(|p| p[3] == 255), "opaque");
+}
+
+#[wasm_bindgen_test]
+fn playground_rebuilds_only_what_changed() {
+    let mut pg = Playground::new(S2).unwrap();
+    assert_eq!(pg.builds(), 1, "built once");
+    pg.render(128).unwrap();
+    let first = pg.rgba();
+    pg.set_view("camera", r#"{"yaw": 10, "pitch": 20}"#)
+        .unwrap();
+    assert_eq!(pg.builds(), 1, "a camera change does not rebuild");
+    pg.render(128).unwrap();
+    assert_ne!(pg.rgba(), first, "but re-renders");
+    pg.set_point(0, 1, &[0.0, 1.0, 0.5]).unwrap();
+    assert_eq!(pg.builds(), 2, "a point change rebuilds the curve");
+    pg.add_curve("nlerp").unwrap();
+    assert_eq!(pg.curve_count(), 2, "two curves");
+    assert_eq!(pg.builds(), 3, "only the new curve is built");
+    // A failed edit leaves everything as it was.
+    let before = pg.scene_json();
+    assert!(pg.set_point(1, 0, &[0.0, 0.0, 0.0]).is_err(), "zero point");
+    assert!(pg.set_scene("{").is_err(), "not JSON");
+    assert!(
+        pg.set_point(0, 9, &[1.0, 0.0, 0.0]).is_err(),
+        "no such point"
+    );
+    assert_eq!(pg.scene_json(), before, "unchanged");
+    assert!(pg.remove_point(0, 0).is_ok(), "remove");
+    assert_eq!(pg.point(0, 0).unwrap(), vec![0.0, 1.0, 0.5], "points shift");
+}
+
+#[wasm_bindgen_test]
+fn picking_and_dragging_use_the_render_projection() {
+    let mut pg = Playground::new(S2).unwrap();
+    let p = pg.point(0, 0).unwrap();
+    let xy = pg.project(p[0], p[1], p[2], 200);
+    if xy[2] >= 0.0 {
+        assert_eq!(
+            pg.pick(xy[0], xy[1], 200, 5.0),
+            Some(vec![0, 0]),
+            "picks the point"
+        );
+    }
+    pg.pin_camera().unwrap();
+    pg.move_point_to(0, 1, 100.0, 100.0, 200).unwrap();
+    let q = pg.point(0, 1).unwrap();
+    let c = pg.unproject(100.0, 100.0, 200);
+    let d: f64 = q.iter().zip(&c).map(|(a, b)| (a - b).abs()).sum();
+    assert!(d < 1e-12, "the point is under the pointer");
+}

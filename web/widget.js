@@ -1,0 +1,182 @@
+// spherekit docs widget: a small interactive view of one scene (drag to turn, play to animate).
+//
+//   <script type="module" src="widget.js"></script>
+//   <spherekit-view size="260" scene='{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}'></spherekit-view>
+//
+// or from a module: import { mount } from './widget.js'; mount(element, sceneJsonText, { size: 260 }).
+// A bad scene shows the CLI's message as text in place of the view.
+import init, * as sk from './pkg/spherekit_wasm.js';
+import { drawBodies } from './draw.js';
+
+let loading = null;
+/** Loads the wasm module once for all widgets on the page. */
+function ready() {
+  loading ??= init({ module_or_path: new URL('./pkg/spherekit_wasm_bg.wasm', import.meta.url) });
+  return loading;
+}
+
+const STYLE = `
+.skv { display: inline-flex; flex-direction: column; gap: 4px; font: 13px system-ui, sans-serif; }
+.skv-stage { position: relative; line-height: 0; }
+.skv-stage canvas { display: block; }
+.skv-overlay { position: absolute; left: 0; top: 0; cursor: grab; touch-action: none; }
+.skv-bar { display: flex; gap: 6px; align-items: center; }
+.skv-bar button { font: inherit; padding: 1px 8px; border: 1px solid #ccd; border-radius: 4px; background: #fff; cursor: pointer; }
+.skv-bar input { flex: 1; }
+.skv-error { color: #b3261e; font-family: ui-monospace, monospace; white-space: pre-wrap; max-width: 100%; margin: 0; }
+`;
+
+function injectStyle() {
+  if (document.getElementById('spherekit-view-style')) return;
+  const style = document.createElement('style');
+  style.id = 'spherekit-view-style';
+  style.textContent = STYLE;
+  document.head.append(style);
+}
+
+/**
+ * Shows `scene` (JSON text) in `element`: the rendered sphere, drag to turn it, a play button
+ * that animates t. Resolves to a handle `{ pg, redraw, destroy }`, or null for a bad scene
+ * (whose message is shown as text). `element.dataset.state` becomes "ready" or "error".
+ */
+export async function mount(element, scene, { size = 260 } = {}) {
+  await ready();
+  injectStyle();
+  element.replaceChildren();
+  const root = document.createElement('div');
+  root.className = 'skv';
+  element.append(root);
+  let pg;
+  try {
+    pg = new sk.Playground(scene);
+  } catch (e) {
+    const p = document.createElement('p');
+    p.className = 'skv-error';
+    p.textContent = `error: ${e instanceof Error ? e.message : String(e)}`;
+    root.append(p);
+    element.dataset.state = 'error';
+    return null;
+  }
+  const dpr = window.devicePixelRatio || 1;
+  const px = Math.max(64, Math.min(2048, Math.round(size * dpr)));
+  const stage = document.createElement('div');
+  stage.className = 'skv-stage';
+  const canvas = document.createElement('canvas');
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', 'spherekit scene');
+  const overlay = document.createElement('canvas');
+  overlay.className = 'skv-overlay';
+  stage.append(canvas, overlay);
+  const bar = document.createElement('div');
+  bar.className = 'skv-bar';
+  const play = document.createElement('button');
+  play.type = 'button';
+  play.textContent = '▶';
+  play.title = 'Play';
+  const slider = document.createElement('input');
+  slider.type = 'range';
+  slider.min = '0';
+  slider.max = '1';
+  slider.step = '0.001';
+  slider.value = '0';
+  slider.setAttribute('aria-label', 'Parameter t');
+  bar.append(play, slider);
+  const error = document.createElement('p');
+  error.className = 'skv-error';
+  error.hidden = true;
+  root.append(stage, bar, error);
+
+  let u = 0;
+  let playing = false;
+  const drawOverlay = () => {
+    const ctx = overlay.getContext('2d');
+    ctx.clearRect(0, 0, overlay.width, overlay.height);
+    if (playing || u > 0) drawBodies(ctx, pg, u, px);
+  };
+  const redraw = () => {
+    try {
+      pg.draw(canvas, px);
+      error.hidden = true;
+    } catch (e) {
+      error.textContent = `error: ${e.message}`;
+      error.hidden = false;
+    }
+    for (const c of [canvas, overlay]) {
+      c.style.width = `${canvas.width / dpr}px`;
+      c.style.height = `${canvas.height / dpr}px`;
+    }
+    overlay.width = canvas.width;
+    overlay.height = canvas.height;
+    drawOverlay();
+  };
+
+  let drag = null;
+  const at = (ev) => {
+    const r = overlay.getBoundingClientRect();
+    return [(ev.clientX - r.left) * (overlay.width / r.width), (ev.clientY - r.top) * (overlay.width / r.width)];
+  };
+  overlay.addEventListener('pointerdown', (ev) => {
+    overlay.setPointerCapture(ev.pointerId);
+    const [x, y] = at(ev);
+    drag = { x, y, camera: pg.camera() };
+  });
+  overlay.addEventListener('pointermove', (ev) => {
+    if (!drag) return;
+    const [x, y] = at(ev);
+    try {
+      pg.drag_view(new Float64Array(drag.camera), drag.x, drag.y, x, y, px);
+      redraw();
+    } catch { /* the view keeps its last camera */ }
+  });
+  const end = () => { drag = null; };
+  overlay.addEventListener('pointerup', end);
+  overlay.addEventListener('pointercancel', end);
+
+  let last = 0;
+  const tick = (now) => {
+    if (!playing || !element.isConnected) return;
+    u = (u + (last ? (now - last) / 4000 : 0)) % 1;
+    last = now;
+    slider.value = String(u);
+    drawOverlay();
+    requestAnimationFrame(tick);
+  };
+  play.addEventListener('click', () => {
+    playing = !playing;
+    play.textContent = playing ? '■' : '▶';
+    play.title = playing ? 'Pause' : 'Play';
+    last = 0;
+    if (playing) requestAnimationFrame(tick);
+  });
+  slider.addEventListener('input', () => {
+    u = Number(slider.value);
+    drawOverlay();
+  });
+
+  redraw();
+  element.dataset.state = 'ready';
+  return {
+    pg,
+    redraw,
+    destroy() {
+      playing = false;
+      element.replaceChildren();
+      pg.free();
+    },
+  };
+}
+
+/** `<spherekit-view scene="…" size="260">`: the widget as a custom element. */
+class SpherekitView extends HTMLElement {
+  connectedCallback() {
+    if (this.started) return;
+    this.started = true;
+    const size = Number(this.getAttribute('size')) || 260;
+    mount(this, this.getAttribute('scene') ?? '', { size }).catch((e) => {
+      this.textContent = `error: ${e.message}`;
+      this.dataset.state = 'error';
+    });
+  }
+}
+
+if (!customElements.get('spherekit-view')) customElements.define('spherekit-view', SpherekitView);
