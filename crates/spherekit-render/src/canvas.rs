@@ -128,44 +128,76 @@ impl Canvas {
         }
     }
 
-    /// Draws the shaded sphere, everything on the far side, the silhouette, then the near side.
-    pub(crate) fn draw(&self, pixmap: &mut Pixmap) {
+    /// The sphere's disc in pixels: centre x, centre y, radius.
+    fn disc(&self) -> (f32, f32, f32) {
         #[expect(clippy::cast_possible_truncation, reason = "pixels")]
-        let (cx, cy, r) = (
+        let disc = (
             self.center.0 as f32,
             self.center.1 as f32,
             self.radius as f32,
         );
+        disc
+    }
+
+    /// Draws the shaded sphere and then every item, without the silhouette: the backdrop that
+    /// [`Canvas::draw`] draws on (see `render_built`).
+    pub(crate) fn draw_backdrop(&self, pixmap: &mut Pixmap) {
+        let (cx, cy, r) = self.disc();
+        // Flat light fill with a darker limb: concentric, so it compresses well in PNG
+        // (a gradient over the whole disc costs ~40 KiB per 512 px image). The gradient
+        // is painted on the outer ring only: the shader costs ~20× a solid fill per pixel.
         if let Some(disc) = PathBuilder::from_circle(cx, cy, r) {
-            // Flat light fill with a darker limb: concentric, so it compresses well in PNG
-            // (a gradient over the whole disc costs ~40 KiB per 512 px image).
-            let shader = RadialGradient::new(
-                Point::from_xy(cx, cy),
-                0.0,
-                Point::from_xy(cx, cy),
-                r,
-                vec![
-                    GradientStop::new(0.0, Color::from_rgba8(0xf1, 0xf4, 0xf8, 0xff)),
-                    GradientStop::new(0.93, Color::from_rgba8(0xf1, 0xf4, 0xf8, 0xff)),
-                    GradientStop::new(1.0, Color::from_rgba8(0xcd, 0xd5, 0xdf, 0xff)),
-                ],
-                SpreadMode::Pad,
-                Transform::identity(),
-            );
-            let mut paint = Paint::default();
-            if let Some(shader) = shader {
-                paint.shader = shader;
-            }
             pixmap.fill_path(
                 &disc,
-                &paint,
+                &solid(SPHERE_FILL, 1.0),
                 FillRule::Winding,
                 Transform::identity(),
                 None,
             );
-            for item in &self.back {
-                self.draw_item(pixmap, item);
-            }
+        }
+        let ring = {
+            let mut pb = PathBuilder::new();
+            pb.push_circle(cx, cy, r);
+            pb.push_circle(cx, cy, LIMB_START * r);
+            pb.finish()
+        };
+        let shader = RadialGradient::new(
+            Point::from_xy(cx, cy),
+            0.0,
+            Point::from_xy(cx, cy),
+            r,
+            vec![
+                GradientStop::new(LIMB_START, rgb(SPHERE_FILL)),
+                GradientStop::new(1.0, rgb(SPHERE_LIMB)),
+            ],
+            SpreadMode::Pad,
+            Transform::identity(),
+        );
+        if let (Some(ring), Some(shader)) = (ring, shader) {
+            let paint = Paint {
+                shader,
+                ..Paint::default()
+            };
+            pixmap.fill_path(
+                &ring,
+                &paint,
+                FillRule::EvenOdd,
+                Transform::identity(),
+                None,
+            );
+        }
+        for item in self.back.iter().chain(&self.front) {
+            self.draw_item(pixmap, item);
+        }
+    }
+
+    /// Draws everything on the far side, the silhouette, then the near side.
+    pub(crate) fn draw(&self, pixmap: &mut Pixmap) {
+        for item in &self.back {
+            self.draw_item(pixmap, item);
+        }
+        let (cx, cy, r) = self.disc();
+        if let Some(disc) = PathBuilder::from_circle(cx, cy, r) {
             let mut rim = Paint::default();
             rim.set_color_rgba8(0x5b, 0x66, 0x73, 0xff);
             let stroke = Stroke {
@@ -206,13 +238,27 @@ impl Canvas {
             .flatten();
         let stroke = Stroke {
             width,
-            line_cap: LineCap::Round,
-            line_join: LineJoin::Round,
+            line_cap: if dash.is_some() {
+                LineCap::Butt
+            } else {
+                LineCap::Round
+            },
+            line_join: LineJoin::Bevel,
             dash,
             ..Stroke::default()
         };
         pixmap.stroke_path(&path, &paint, &stroke, Transform::identity(), None);
     }
+}
+
+/// The sphere's fill and the colour it darkens to at the limb.
+const SPHERE_FILL: Rgb = [0xf1, 0xf4, 0xf8];
+const SPHERE_LIMB: Rgb = [0xcd, 0xd5, 0xdf];
+/// Where the limb shading starts, as a fraction of the radius.
+const LIMB_START: f32 = 0.93;
+
+fn rgb(c: Rgb) -> Color {
+    Color::from_rgba8(c[0], c[1], c[2], 0xff)
 }
 
 /// A solid paint of `color` at opacity `alpha`.

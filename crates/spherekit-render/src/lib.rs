@@ -27,6 +27,7 @@ mod plot;
 mod view;
 
 use core::fmt;
+use std::cell::RefCell;
 
 use spherekit::glam::DVec3;
 use spherekit::scene::{Built, BuiltCurve, Method, Scene, SceneError, Space};
@@ -139,10 +140,9 @@ pub fn render_built(
     } else {
         0
     };
-    let mut pixmap = Pixmap::new(size, size + strip).ok_or(RenderError::Size(size))?;
-    pixmap.fill(Color::WHITE);
-    let mut canvas = Canvas::new(size, view.axes());
-    graticule(&mut canvas);
+    let axes = view.axes();
+    let mut pixmap = backdrop(size, size + strip, axes).ok_or(RenderError::Size(size))?;
+    let mut canvas = Canvas::new(size, axes);
     let single = curves.len() == 1;
     let mut series = Vec::new();
     for (i, (spec, curve)) in scene.curves.iter().zip(curves).enumerate() {
@@ -232,6 +232,32 @@ fn interpolates(method: Method) -> bool {
             | Method::CornerBlend
             | Method::CatmullRom
     )
+}
+
+/// The white page with the shaded sphere and its graticule for one size and camera: the part
+/// of a frame that does not depend on the curves. The last one drawn is kept (per thread), so
+/// that redrawing after an edit that leaves the camera alone, such as dragging a point in the
+/// playground, starts from a copy. A copy and a fresh drawing are the same pixels.
+fn backdrop(size: u32, height: u32, axes: [DVec3; 3]) -> Option<Pixmap> {
+    type Key = (u32, u32, [DVec3; 3]);
+    thread_local! {
+        static LAST: RefCell<Option<(Key, Pixmap)>> = const { RefCell::new(None) };
+    }
+    let key = (size, height, axes);
+    LAST.with_borrow_mut(|last| {
+        if let Some((k, pixmap)) = last.as_ref()
+            && *k == key
+        {
+            return Some(pixmap.clone());
+        }
+        let mut pixmap = Pixmap::new(size, height)?;
+        pixmap.fill(Color::WHITE);
+        let mut canvas = Canvas::new(size, axes);
+        graticule(&mut canvas);
+        canvas.draw_backdrop(&mut pixmap);
+        *last = Some((key, pixmap.clone()));
+        Some(pixmap)
+    })
 }
 
 fn graticule(canvas: &mut Canvas) {

@@ -210,17 +210,18 @@ fn continuity_json(curves: &[BuiltCurve]) -> Value {
 pub fn render_rgba(scene: &str, size: u32) -> Result<Vec<u8>, JsError> {
     let (scene, curves) = load(scene).map_err(js)?;
     let pixmap = render_built(&scene, &curves, size).map_err(js)?;
-    Ok(rgba(&pixmap))
+    Ok(straight_rgba(pixmap))
 }
 
-/// tiny-skia keeps premultiplied pixels; canvases and PNGs take straight alpha.
-fn rgba(pixmap: &Pixmap) -> Vec<u8> {
-    let mut out = Vec::with_capacity(pixmap.data().len());
-    for p in pixmap.pixels() {
-        let c = p.demultiply();
-        out.extend_from_slice(&[c.red(), c.green(), c.blue(), c.alpha()]);
-    }
-    out
+/// tiny-skia keeps premultiplied pixels; canvases take straight alpha. Frames from
+/// [`render_built`] are opaque (it paints a white page first), and an opaque premultiplied pixel
+/// is its straight value, so the bytes go as they are.
+fn straight_rgba(pixmap: Pixmap) -> Vec<u8> {
+    debug_assert!(
+        pixmap.pixels().iter().all(|p| p.alpha() == u8::MAX),
+        "render_built frames are opaque"
+    );
+    pixmap.take()
 }
 
 /// The page's handle on one scene: the scene's JSON document, the validated scene, its built
@@ -235,7 +236,8 @@ pub struct Playground {
     doc: Map<String, Value>,
     scene: Scene,
     curves: Vec<BuiltCurve>,
-    frame: Option<Pixmap>,
+    /// Width of the last rendered frame (0 before the first render).
+    width: u32,
     rgba: Vec<u8>,
     builds: u32,
 }
@@ -257,7 +259,7 @@ impl Playground {
             doc,
             scene,
             curves,
-            frame: None,
+            width: 0,
             rgba: Vec::new(),
         })
     }
@@ -701,9 +703,9 @@ impl Playground {
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
         let pixmap = render_built(&self.scene, &self.curves, size).map_err(js)?;
-        self.rgba = rgba(&pixmap);
         let h = pixmap.height();
-        self.frame = Some(pixmap);
+        self.width = pixmap.width();
+        self.rgba = straight_rgba(pixmap);
         Ok(h)
     }
 
@@ -720,7 +722,7 @@ impl Playground {
     /// The CLI's message for a bad view or size; a canvas without a 2D context.
     pub fn draw(&mut self, canvas: &web_sys::HtmlCanvasElement, size: u32) -> Result<(), JsError> {
         let h = self.render(size)?;
-        let w = self.frame.as_ref().map_or(size, Pixmap::width);
+        let w = self.width;
         if canvas.width() != w || canvas.height() != h {
             canvas.set_width(w);
             canvas.set_height(h);

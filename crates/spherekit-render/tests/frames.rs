@@ -1,0 +1,63 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Properties of rendered frames that callers rely on: they are opaque (the wasm crate hands
+//! the bytes to a canvas as straight alpha), and redrawing from the kept backdrop gives the
+//! pixels of a fresh drawing.
+
+use spherekit::scene::Scene;
+use spherekit_render::{RenderError, render};
+
+fn scene(text: &str) -> Scene {
+    Scene::from_json(text).expect("valid scene")
+}
+
+const S2: &str = r#"{"space":"S2","method":"catmull-rom",
+    "points":[[1,0,0],[0,1,0],[0,0,1],[-1,0,0.2],[0,-1,0]],"view":{"plot":"speed"}}"#;
+const S3: &str = r#"{"space":"S3","curves":[
+    {"method":"squad","points":[[1,0,0,0],[0.7071,0.7071,0,0],[0,0,1,0],[0.5,0.5,0.5,0.5]]},
+    {"method":"bspline-kim","points":[[1,0,0,0],[0.7071,0.7071,0,0],[0,0,1,0],[0.5,0.5,0.5,0.5]]}],
+    "view":{"plot":"speed","frames":3}}"#;
+const S2_OTHER_CAMERA: &str = r#"{"space":"S2","method":"geodesic",
+    "points":[[1,0,0],[0,1,0],[0,0,1]],"view":{"camera":{"yaw":120,"pitch":-40}}}"#;
+
+#[test]
+fn frames_are_opaque() {
+    for text in [S2, S3, S2_OTHER_CAMERA] {
+        let pixmap = render(&scene(text), 200).expect("renders");
+        assert!(
+            pixmap.pixels().iter().all(|p| p.alpha() == u8::MAX),
+            "a pixel is not opaque in {text}"
+        );
+    }
+}
+
+#[test]
+fn kept_backdrop_gives_the_pixels_of_a_fresh_drawing() {
+    // Each scene drawn first on a thread of its own (nothing kept), then in one thread in an
+    // order that reuses the backdrop (same size and camera twice in a row) and replaces it.
+    let fresh: Vec<Vec<u8>> = [S2, S3, S2_OTHER_CAMERA]
+        .iter()
+        .map(|&text| {
+            std::thread::spawn(move || render(&scene(text), 160).expect("renders").take())
+                .join()
+                .expect("thread")
+        })
+        .collect();
+    for (i, text) in [S2, S2, S3, S3, S2_OTHER_CAMERA, S2, S2_OTHER_CAMERA]
+        .iter()
+        .enumerate()
+    {
+        let k = [0, 0, 1, 1, 2, 0, 2][i];
+        let again = render(&scene(text), 160).expect("renders").take();
+        assert!(again == fresh[k], "draw {i} differs from a fresh drawing");
+    }
+}
+
+#[test]
+fn sizes_outside_the_range_are_errors() {
+    let s = scene(S2);
+    assert!(matches!(render(&s, 15), Err(RenderError::Size(15))));
+    assert!(matches!(render(&s, 4097), Err(RenderError::Size(4097))));
+    assert!(render(&s, 16).is_ok());
+}
