@@ -3,7 +3,7 @@
 //
 //   node tests/e2e/run.mjs          (just test-e2e)
 //
-// Screenshots go to tests/e2e/out/ (git-ignored). SPHEREKIT_BENCH=1 also runs the ?bench page.
+// Screenshots go to tests/e2e/out/ (git-ignored).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { createServer } from 'node:http';
@@ -282,15 +282,3 @@ test('screenshots of the playground', async () => {
 test('the playground loads nothing from other origins', () => {
   assert.deepEqual(externalRequests, []);
 });
-
-if (process.env.SPHEREKIT_BENCH) {
-  test('frame time (?bench)', async () => {
-    const page = await newPage();
-    await page.goto(`${origin}/index.html?bench`);
-    await page.waitForFunction(() => window.spherekitBench, null, { timeout: 120000 });
-    const bench = await page.evaluate(() => window.spherekitBench);
-    console.log(`bench: ${JSON.stringify(bench)}`);
-    assert.ok(bench.medianMs < 16, `median rebuild + render ${bench.medianMs} ms < 16 ms`);
-    await page.close();
-  });
-}

@@ -189,6 +189,24 @@ fn bad_input_exits_2_with_one_line_naming_the_field() {
             &[],
             "unknown field `colour`",
         ),
+        // Parse errors name the JSON path where they happened, on any line.
+        (
+            "{\"space\": \"S2\", \"method\": \"geodesic\",\n \"points\": [[1, 0, 0],\n [0, 1e999, 0]]}",
+            &[],
+            "invalid scene JSON: points[1][1]: number out of range at line 3 column 10",
+        ),
+        (
+            r#"{"space":"S2","curves":[{"method":"nlerp","points":[[1,0,0],[0,1,0]]},
+                {"method":"nlerp","points":[[1,0,0],[0,1,0]],"knots":[0,"1"]}]}"#,
+            &[],
+            "curves[1].knots[1]: invalid type: string \"1\", expected f64",
+        ),
+        (
+            r#"{"space":"S2","curves":[{"method":"nlerp","points":[[1,0,0],[0,1,0]],"sample":3}]}"#,
+            &[],
+            "invalid scene JSON: curves[0]: unknown field `sample`",
+        ),
+        ("null", &[], "invalid type: null, expected a scene object"),
         (
             r#"{"space":"S2","method":"spline","points":[[1,0,0],[0,1,0]]}"#,
             &[],
@@ -341,6 +359,95 @@ fn bad_input_exits_2_with_one_line_naming_the_field() {
     // Deeply nested JSON is rejected by the parser's depth limit, not by a stack overflow.
     let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
     assert!(reject(&deep, &[]).contains("invalid scene JSON"));
+}
+
+/// The largest `c<order>` jump over the joints of a `--continuity` report.
+fn max_jump(out: &Value, order: usize) -> f64 {
+    let joints = out["continuity"].as_array().unwrap();
+    assert!(!joints.is_empty(), "joints reported: {out}");
+    joints
+        .iter()
+        .map(|j| j[format!("c{order}")].as_f64().unwrap())
+        .fold(0.0, f64::max)
+}
+
+const S2_KEYS: &str = "[[1,0,0],[0.6,0.8,0],[0,0.6,0.8],[-0.6,0,0.8],[-0.8,-0.6,0]]";
+const S3_KEYS: &str = "[[1,0,0,0],[0.9,0.3,0.3,0.1],[0.6,0.2,0.7,0.3],[0.3,0.8,0.4,0.3],[0.2,0.3,0.5,0.8],[0.5,0.1,0.2,0.8]]";
+
+#[test]
+fn continuity_controls_and_info_through_the_cli() {
+    // arc-blend: Cⁿ at every joint for the order asked, and not C^(n+1) at order 1.
+    let arc = |order: u32| {
+        let scene = format!(
+            r#"{{"space":"S2","method":"arc-blend","points":{S2_KEYS},"params":{{"order":{order}}}}}"#
+        );
+        sample(&scene, &["--continuity", "--samples", "3"])
+    };
+    let c2 = arc(2);
+    assert!(max_jump(&c2, 0) < 1e-12 && max_jump(&c2, 1) < 1e-9 && max_jump(&c2, 2) < 1e-9);
+    assert_eq!(c2["info"]["knots"].as_array().unwrap().len(), 5);
+    assert!(max_jump(&arc(1), 2) > 1e-3, "order 1 is only C¹");
+
+    // gamma: C¹ for any γ and spacing, with the C² residuals of every interior joint in `info`.
+    let gamma = sample(
+        &format!(
+            r#"{{"space":"S3","method":"gamma","points":{S3_KEYS},"knots":[0,0.5,2,3],
+                "params":{{"gamma":[0.4,2.5]}}}}"#
+        ),
+        &["--continuity", "--samples", "3"],
+    );
+    assert!(max_jump(&gamma, 1) < 1e-9, "{}", gamma["continuity"]);
+    assert!(max_jump(&gamma, 2) > 1e-3, "not C² for these γ");
+    assert_eq!(gamma["controls"].as_array().unwrap().len(), 3 * 3 + 1);
+    let joints = gamma["info"]["joints"].as_array().unwrap();
+    assert_eq!(joints.len(), 2);
+    assert!(
+        joints
+            .iter()
+            .all(|j| j["paper_residual"].as_f64().unwrap() > 0.0)
+    );
+
+    // squad: the inner quadrangle points are reported; C¹ but not C².
+    let squad = sample(
+        &format!(r#"{{"space":"S3","method":"squad","points":{S3_KEYS},"knots":[0,1,3,4,4.5,7]}}"#),
+        &["--continuity", "--samples", "3"],
+    );
+    assert_eq!(squad["controls"].as_array().unwrap().len(), 6);
+    assert!(max_jump(&squad, 1) < 1e-9 && max_jump(&squad, 2) > 1e-3);
+
+    // beta: interpolates, with the solver's auxiliary vertices, iterations and residual.
+    let beta = sample(
+        &format!(
+            r#"{{"space":"S2","method":"beta","points":{S2_KEYS},"params":{{"beta2":[0,1,2,1,0]}}}}"#
+        ),
+        &["--continuity", "--samples", "5"],
+    );
+    assert_eq!(beta["auxiliary"].as_array().unwrap().len(), 5);
+    assert_eq!(beta["info"]["solver"], "newton");
+    assert!(beta["info"]["iterations"].as_u64().unwrap() >= 1);
+    assert!(beta["info"]["residual"].as_f64().unwrap() < 1e-12);
+    assert!(
+        max_jump(&beta, 0) < 1e-12 && max_jump(&beta, 1) < 1e-9,
+        "C¹ at β₁ = 1"
+    );
+    assert_eq!(beta["domain"], serde_json::json!([0.0, 4.0]));
+    let keys: Value = serde_json::from_str(S2_KEYS).unwrap();
+    for k in 0..5 {
+        let (key, got) = (&keys[k], &beta["points"][k]);
+        let d: f64 = (0..3)
+            .map(|i| (got[i].as_f64().unwrap() - key[i].as_f64().unwrap() / norm(key)).powi(2))
+            .sum();
+        assert!(d.sqrt() < 1e-12, "key {k} interpolated: {got} vs {key}");
+    }
+}
+
+fn norm(v: &Value) -> f64 {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap().powi(2))
+        .sum::<f64>()
+        .sqrt()
 }
 
 #[test]

@@ -329,7 +329,7 @@ impl Support {
 
 /// The scene as written in JSON, before validation.
 #[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, expecting = "a scene object")]
 struct RawScene {
     space: String,
     #[serde(default)]
@@ -356,7 +356,7 @@ struct RawScene {
 
 /// One curve of a multi-curve scene, as written in JSON.
 #[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, expecting = "a curve object")]
 struct RawCurve {
     method: String,
     points: Vec<Vec<f64>>,
@@ -533,6 +533,104 @@ impl CurveSpec {
     }
 }
 
+/// A parse error's text, prefixed by the JSON path where it happened (`points[1][0]: number
+/// out of range at line 1 column 31`) when the error is inside the document.
+fn json_error(text: &str, e: &serde_json::Error) -> String {
+    let path = (e.line() > 0)
+        .then(|| {
+            let line_start: usize = text
+                .split_inclusive('\n')
+                .take(e.line() - 1)
+                .map(str::len)
+                .sum();
+            // serde_json's column counts the bytes of the line read so far.
+            let path = json_path_at(text, line_start + e.column());
+            // An unknown key is named by the message: the path is the object holding it.
+            if e.to_string().starts_with("unknown field") {
+                path.rsplit_once('.')
+                    .map(|(head, _)| head.to_owned())
+                    .unwrap_or_default()
+            } else {
+                path
+            }
+        })
+        .unwrap_or_default();
+    if path.is_empty() {
+        e.to_string()
+    } else {
+        format!("{path}: {e}")
+    }
+}
+
+/// The JSON path (`curves[0].points[2]`) of the value being read at byte `offset` of `text`,
+/// found by scanning the brackets, keys and commas before it; empty at the top level.
+fn json_path_at(text: &str, offset: usize) -> String {
+    enum Frame {
+        Object {
+            key: Option<String>,
+            expecting_key: bool,
+        },
+        Array(usize),
+    }
+    let bytes = &text.as_bytes()[..offset.min(text.len())];
+    let mut stack: Vec<Frame> = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'"' => {
+                let start = i + 1;
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'"' {
+                    i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+                if let Some(Frame::Object { key, expecting_key }) = stack.last_mut()
+                    && *expecting_key
+                    && i < bytes.len()
+                {
+                    *key = Some(String::from_utf8_lossy(&bytes[start..i]).into_owned());
+                    *expecting_key = false;
+                }
+            }
+            b'{' => stack.push(Frame::Object {
+                key: None,
+                expecting_key: true,
+            }),
+            b'[' => stack.push(Frame::Array(0)),
+            b'}' | b']' => {
+                stack.pop();
+            }
+            b',' => match stack.last_mut() {
+                Some(Frame::Array(index)) => *index += 1,
+                Some(Frame::Object { key, expecting_key }) => {
+                    *key = None;
+                    *expecting_key = true;
+                }
+                None => {}
+            },
+            _ => {}
+        }
+        i += 1;
+    }
+    let mut path = String::new();
+    for (depth, frame) in stack.iter().enumerate() {
+        if depth == 12 {
+            path.push_str("…");
+            break;
+        }
+        match frame {
+            Frame::Object { key: Some(key), .. } => {
+                if !path.is_empty() {
+                    path.push('.');
+                }
+                path.push_str(key);
+            }
+            Frame::Object { key: None, .. } => break,
+            Frame::Array(index) => path.push_str(&format!("[{index}]")),
+        }
+    }
+    one_line(&path)
+}
+
 impl Scene {
     /// Parses and validates a scene (everything but the curve constructions themselves).
     ///
@@ -541,7 +639,7 @@ impl Scene {
     /// [`SceneError::Json`] for text that is not a scene, [`SceneError::Field`] for a bad field.
     pub fn from_json(text: &str) -> Result<Self, SceneError> {
         let raw: RawScene =
-            serde_json::from_str(text).map_err(|e| SceneError::Json(e.to_string()))?;
+            serde_json::from_str(text).map_err(|e| SceneError::Json(json_error(text, &e)))?;
         let space = Space::parse(&raw.space)?;
         let listed = raw.curves.is_some();
         let curves = match (raw.curves, raw.method, raw.points) {
