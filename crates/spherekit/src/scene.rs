@@ -536,25 +536,23 @@ impl CurveSpec {
 /// A parse error's text, prefixed by the JSON path where it happened (`points[1][0]: number
 /// out of range at line 1 column 31`) when the error is inside the document.
 fn json_error(text: &str, e: &serde_json::Error) -> String {
-    let path = (e.line() > 0)
-        .then(|| {
-            let line_start: usize = text
-                .split_inclusive('\n')
-                .take(e.line() - 1)
-                .map(str::len)
-                .sum();
-            // serde_json's column counts the bytes of the line read so far.
-            let path = json_path_at(text, line_start + e.column());
-            // An unknown key is named by the message: the path is the object holding it.
-            if e.to_string().starts_with("unknown field") {
-                path.rsplit_once('.')
-                    .map(|(head, _)| head.to_owned())
-                    .unwrap_or_default()
-            } else {
-                path
-            }
-        })
-        .unwrap_or_default();
+    if e.line() == 0 {
+        return e.to_string();
+    }
+    let line_start: usize = text
+        .split_inclusive('\n')
+        .take(e.line() - 1)
+        .map(str::len)
+        .sum();
+    // serde_json's column counts the bytes of the line read so far.
+    let mut path = json_path_at(text, line_start + e.column());
+    // An unknown key is named by the message: the path is the object holding it.
+    if e.to_string().starts_with("unknown field") {
+        path = path
+            .rsplit_once('.')
+            .map(|(head, _)| head.to_owned())
+            .unwrap_or_default();
+    }
     if path.is_empty() {
         e.to_string()
     } else {
@@ -614,7 +612,7 @@ fn json_path_at(text: &str, offset: usize) -> String {
     let mut path = String::new();
     for (depth, frame) in stack.iter().enumerate() {
         if depth == 12 {
-            path.push_str("…");
+            path.push('…');
             break;
         }
         match frame {
