@@ -196,6 +196,10 @@ function renderPanels() {
   $('plot').checked = hasPlot();
   $('frames').checked = Boolean(scene.view?.frames);
   $('frames').disabled = space !== 'S3';
+  // The renderer traces x, y and z for one S³ curve and x alone for several.
+  const axes = scene.view?.axes ?? (pg.curve_count() > 1 ? ['x'] : ['x', 'y', 'z']);
+  $('axes').hidden = space !== 'S3';
+  for (const box of $('axes').querySelectorAll('input')) box.checked = axes.includes(box.value);
 
   const colors = JSON.parse(pg.colors());
   const box = $('curves');
@@ -247,35 +251,7 @@ function renderPanels() {
     p.className = 'muted';
     p.textContent = summary;
     card.append(p);
-    // Parameters: a JSON object editor (works for every method's params).
-    const label = document.createElement('label');
-    label.textContent = 'params ';
-    const input = document.createElement('input');
-    input.className = 'params';
-    input.spellcheck = false;
-    input.value = JSON.stringify(curve.params ?? {});
-    input.setAttribute('aria-label', `Parameters of curve ${c} (JSON)`);
-    input.addEventListener('change', () => {
-      let obj;
-      try {
-        obj = JSON.parse(input.value || '{}');
-      } catch (e) {
-        showError(`params: ${e.message}`);
-        return;
-      }
-      const fields = { ...curve };
-      delete fields.points;
-      if (obj && typeof obj === 'object' && Object.keys(obj).length) fields.params = obj;
-      else delete fields.params;
-      if (attempt(() => pg.set_curve(c, JSON.stringify(fields)))) changed();
-    });
-    label.append(input);
-    card.append(label);
-    // Sliders for numeric parameters already present.
-    for (const [name, value] of Object.entries(curve.params ?? {})) {
-      if (typeof value !== 'number') continue;
-      card.append(paramSlider(c, name, value));
-    }
+    card.append(...curveControls(c, curve, space));
     box.append(card);
   }
   const adder = $('new-method');
@@ -285,24 +261,156 @@ function renderPanels() {
   renderPointEditor();
 }
 
-function paramSlider(c, name, value) {
+// The controls of each method's parameters. The scene format (crates/spherekit/src/scene.rs)
+// validates every value; this table only gives the controls' ranges and defaults.
+// `perPoint(n)`: how many values a per-joint list has for n points; `first`: the index of its
+// first entry in the sources' numbering (the Gamma paper's γ₁ … γₗ₋₁).
+const PARAMS = {
+  'catmull-rom': [{ name: 'tangent', choices: ['quaternion', 'intrinsic'], spaces: ['S3'] }],
+  gamma: [
+    { name: 'gamma', label: 'γ', min: 0.05, max: 4, value: 1, perPoint: (n) => n - 4, first: 1 },
+    { name: 'last_edge', choices: ['formula', 'paper-example'] },
+  ],
+  beta: [
+    { name: 'beta1', label: 'β₁ bias', min: 0.1, max: 4, value: 1, perPoint: (n) => n },
+    { name: 'beta2', label: 'β₂ tension', min: 0, max: 20, value: 0, perPoint: (n) => n },
+    { name: 'interpolate', bool: true, value: true },
+    { name: 'solver', choices: ['newton', 'jacobi'] },
+  ],
+  'arc-blend': [{ name: 'order', label: 'order n', min: 1, max: 10, step: 1, value: 2 }],
+  'corner-blend': [
+    { name: 'order', label: 'order n', min: 1, max: 10, step: 1, value: 2 },
+    { name: 'fraction', label: 'fraction', min: 0.02, max: 0.5, value: 0.25 },
+  ],
+};
+/** Methods that take `knots`, and how many for n points. */
+const KNOT_COUNT = { geodesic: (n) => n, nlerp: (n) => n, squad: (n) => n, 'catmull-rom': (n) => n - 2, gamma: (n) => n - 2 };
+
+/** Sets a parameter (null removes it) and redraws; the panels follow unless `live`. */
+function setParam(c, name, value, { live = false } = {}) {
+  if (attempt(() => state.pg.set_param(c, name, JSON.stringify(value)))) changed({ panels: !live });
+  else if (!live) renderPanels();
+}
+
+/** Replaces one field of curve `c` (null removes it), keeping its points and other fields. */
+function setCurveField(c, curve, name, value) {
+  const fields = { ...curve };
+  delete fields.points;
+  if (value === null) delete fields[name];
+  else fields[name] = value;
+  if (attempt(() => state.pg.set_curve(c, JSON.stringify(fields)))) changed();
+}
+
+/** The parameter controls of curve `c`: one per parameter of its method, knots, raw JSON. */
+function curveControls(c, curve, space) {
+  const controls = [];
+  const params = curve.params ?? {};
+  const n = curve.points.length;
+  for (const spec of PARAMS[curve.method] ?? []) {
+    if (spec.spaces && !spec.spaces.includes(space)) continue;
+    const value = params[spec.name] ?? spec.value;
+    if (spec.choices) {
+      const label = document.createElement('label');
+      label.className = 'row slider';
+      const select = document.createElement('select');
+      for (const ch of spec.choices) select.append(new Option(ch, ch));
+      select.value = value ?? spec.choices[0];
+      select.addEventListener('change', () => setParam(c, spec.name, select.value === spec.choices[0] ? null : select.value));
+      label.append(`${spec.label ?? spec.name} `, select);
+      controls.push(label);
+    } else if (spec.bool) {
+      const label = document.createElement('label');
+      label.className = 'check';
+      const box = document.createElement('input');
+      box.type = 'checkbox';
+      box.checked = value;
+      box.addEventListener('change', () => setParam(c, spec.name, box.checked === spec.value ? null : box.checked));
+      label.append(box, ` ${spec.name}`);
+      controls.push(label);
+    } else {
+      const joints = spec.perPoint ? spec.perPoint(n) : 0;
+      const list = Array.isArray(value) ? value : null;
+      if (list) {
+        list.forEach((v, k) => controls.push(slider(spec, `${spec.label} [${k + (spec.first ?? 0)}]`, v, (x, live) => {
+          const next = list.slice();
+          next[k] = x;
+          setParam(c, spec.name, next, { live });
+        })));
+      } else {
+        controls.push(slider(spec, spec.label, value, (x, live) => setParam(c, spec.name, x, { live })));
+      }
+      if (joints > 1) {
+        const label = document.createElement('label');
+        label.className = 'check muted';
+        const box = document.createElement('input');
+        box.type = 'checkbox';
+        box.checked = Boolean(list);
+        box.addEventListener('change', () => setParam(c, spec.name, box.checked ? new Array(joints).fill(value) : list[0]));
+        label.append(box, ` ${spec.label} per joint`);
+        controls.push(label);
+      }
+    }
+  }
+  const knotCount = KNOT_COUNT[curve.method];
+  if (knotCount) {
+    const label = document.createElement('label');
+    label.textContent = `knots (${knotCount(n)}, increasing; empty = 0, 1, 2, …) `;
+    const input = document.createElement('input');
+    input.className = 'params';
+    input.spellcheck = false;
+    input.value = (curve.knots ?? []).join(', ');
+    input.placeholder = 'uniform';
+    input.setAttribute('aria-label', `Knots of curve ${c}`);
+    input.addEventListener('change', () => {
+      const text = input.value.trim();
+      setCurveField(c, curve, 'knots', text ? text.split(/[\s,]+/).map(Number) : null);
+    });
+    label.append(input);
+    controls.push(label);
+  }
+  // Every parameter (solver tolerances too) as JSON.
+  const details = document.createElement('details');
+  const summary = document.createElement('summary');
+  summary.className = 'muted';
+  summary.textContent = 'params as JSON';
+  const input = document.createElement('input');
+  input.className = 'params';
+  input.spellcheck = false;
+  input.value = JSON.stringify(params);
+  input.setAttribute('aria-label', `Parameters of curve ${c} (JSON)`);
+  input.addEventListener('change', () => {
+    let obj;
+    try {
+      obj = JSON.parse(input.value || '{}');
+    } catch (e) {
+      showError(`params: ${e.message}`);
+      return;
+    }
+    setCurveField(c, curve, 'params', obj && typeof obj === 'object' && Object.keys(obj).length ? obj : null);
+  });
+  details.append(summary, input);
+  controls.push(details);
+  return controls;
+}
+
+/** A labelled range input; `set(value, live)` runs while dragging (live) and on release. */
+function slider(spec, name, value, set) {
   const row = document.createElement('label');
   row.className = 'row slider';
-  const integer = Number.isInteger(value) && !['fraction', 'tension', 'bias', 'beta1', 'beta2'].includes(name);
   const range = document.createElement('input');
   range.type = 'range';
-  range.min = integer ? '0' : String(Math.min(0, value));
-  range.max = integer ? String(Math.max(8, value)) : String(Math.max(1, 2 * value));
-  range.step = integer ? '1' : 'any';
+  range.min = String(Math.min(spec.min, value));
+  range.max = String(Math.max(spec.max, value));
+  range.step = String(spec.step ?? 'any');
   range.value = String(value);
   const out = document.createElement('output');
-  out.textContent = String(value);
+  const show = (v) => (spec.step === 1 ? String(v) : v.toFixed(3));
+  out.textContent = show(value);
   range.addEventListener('input', () => {
-    const v = Number(range.value);
-    out.textContent = integer ? String(v) : v.toFixed(3);
-    if (attempt(() => state.pg.set_param(c, name, JSON.stringify(v)))) changed({ panels: false });
+    out.textContent = show(Number(range.value));
+    set(Number(range.value), true);
   });
-  range.addEventListener('change', () => renderPanels());
+  range.addEventListener('change', () => set(Number(range.value), false));
   row.append(`${name} `, range, out);
   return row;
 }
@@ -314,8 +422,8 @@ function methodSelect(space, value, id) {
     const opt = document.createElement('option');
     opt.value = m.id;
     const fits = m.spaces.split(', ').includes(space) || (m.spaces.includes('S<m>') && space !== 'S3' && space !== 'S2');
-    opt.textContent = m.implemented !== false ? m.id : `${m.id} (not yet)`;
-    opt.disabled = m.implemented === false || !fits;
+    opt.textContent = m.id;
+    opt.disabled = !fits;
     opt.title = `${m.summary} — ${m.spaces}`;
     select.append(opt);
   }
@@ -542,19 +650,20 @@ function setPlaying(on) {
 // ---- benchmark (?bench) -----------------------------------------------------------------------
 
 async function bench() {
-  // 20 keys on S³ (a deterministic tumbling sequence), 4 000 samples, 800 × 800.
+  // 20 keys on S³ (a deterministic tumbling sequence), 4 000 samples, 800 × 800. Each frame
+  // moves key 7 (the handle rebuilds the curve), renders and draws the frame, and samples the
+  // curve at 4 000 parameters (sample_array parses and builds its own copy of the scene).
   const keys = [];
   for (let k = 0; k < 20; k++) {
     const axis = [Math.cos(1.3 * k), Math.sin(1.3 * k), 0.5 * Math.cos(0.4 * k)];
     keys.push(Array.from(sk.axis_angle_to_key(40 * k, ...axis)));
   }
-  const smooth = ['bspline-kim', 'squad', 'catmull-rom', 'arc-blend', 'geodesic'];
-  const method = smooth.find((id) => state.methods.some((m) => m.id === id && m.implemented !== false && m.spaces.includes('S3')));
+  const method = 'bspline-kim'; // C², three exponentials per sample
   const scene = { space: 'S3', method, points: keys, samples: 4000 };
   const pg = new sk.Playground(JSON.stringify(scene));
   const canvas = document.createElement('canvas');
-  const times = [];
-  const sampleTimes = [];
+  const times = [];       // rebuild + render + 4 000 samples
+  const renderTimes = []; // rebuild + render
   for (let f = 0; f < 110; f++) {
     const key = keys[7].slice();
     key[1] += 0.01 * Math.sin(f);
@@ -565,8 +674,8 @@ async function bench() {
     sk.sample_array(pg.scene_json(), 0, 'points'); // 4 000 samples of the curve
     const t2 = performance.now();
     if (f >= 10) {
-      times.push(t1 - t0);
-      sampleTimes.push(t2 - t1);
+      times.push(t2 - t0);
+      renderTimes.push(t1 - t0);
     }
     await new Promise((r) => setTimeout(r, 0));
   }
@@ -579,7 +688,7 @@ async function bench() {
     frames: times.length,
     medianMs: median(times),
     maxMs: Math.max(...times),
-    medianSampleMs: median(sampleTimes),
+    medianRenderMs: median(renderTimes),
     builds: pg.builds(),
   };
   pg.free();
@@ -599,6 +708,15 @@ function sceneFromHash() {
   }
 }
 
+/** A golden scene's file name as a menu label: `arc_blend_s2_fig_8_3` → `arc blend on S² (fig. 8.3)`. */
+function presetLabel(name) {
+  return name
+    .replace(/_s([123])(?=_|$)/g, (_, d) => ` on S${'¹²³'[d - 1]}`)
+    .replace(/_fig_(\d+)_(\d+)/, ' (fig. $1.$2)')
+    .replace(/example(\d)/, 'example $1')
+    .replaceAll('_', ' ');
+}
+
 async function main() {
   await init();
   state.methods = JSON.parse(sk.methods());
@@ -612,7 +730,7 @@ async function main() {
   for (const p of state.presets) {
     const opt = document.createElement('option');
     opt.value = p.name;
-    opt.textContent = p.name.replaceAll('_', ' ');
+    opt.textContent = presetLabel(p.name);
     preset.append(opt);
   }
   const fallback = state.presets.find((p) => p.name === 'geodesic_s3') ?? state.presets[0];
@@ -658,6 +776,14 @@ async function main() {
   });
   $('plot').addEventListener('change', () => {
     if (attempt(() => state.pg.set_view('plot', JSON.stringify($('plot').checked ? 'speed' : 'none')))) changed();
+  });
+  $('axes').addEventListener('change', () => {
+    const axes = [...$('axes').querySelectorAll('input:checked')].map((b) => b.value);
+    if (axes.length === 0) {
+      renderPanels(); // at least one axis
+      return;
+    }
+    if (attempt(() => state.pg.set_view('axes', JSON.stringify(axes)))) changed();
   });
   $('frames').addEventListener('change', () => {
     if (attempt(() => state.pg.set_view('frames', $('frames').checked ? '7' : 'null'))) changed();

@@ -19,6 +19,7 @@ const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, '../..');
 const webDir = path.join(root, 'web');
 const goldenDir = path.join(root, 'tests/golden');
+const badDir = path.join(root, 'tests/robustness/bad');
 const outDir = path.join(here, 'out');
 const GOLDEN_SIZE = 384;
 
@@ -95,12 +96,26 @@ async function openPlayground(page, url) {
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
-/** The scene canvas's pixels, straight RGBA. */
+/** The scene canvas's pixels, straight RGBA (sent as base64: an array of numbers is slow). */
 async function canvasPixels(page) {
-  return page.evaluate(() => {
+  const { width, height, base64 } = await page.evaluate(() => {
     const c = document.getElementById('scene');
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height);
-    return { width: c.width, height: c.height, data: Array.from(d.data) };
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let bytes = '';
+    for (let i = 0; i < d.length; i += 0x8000) bytes += String.fromCharCode(...d.subarray(i, i + 0x8000));
+    return { width: c.width, height: c.height, base64: btoa(bytes) };
+  });
+  return { width, height, data: Buffer.from(base64, 'base64') };
+}
+
+/** SHA-256 of the scene canvas's pixels after the next frames, computed in the page (fast). */
+async function canvasHash(page) {
+  return page.evaluate(async () => {
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    const c = document.getElementById('scene');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const digest = await crypto.subtle.digest('SHA-256', d);
+    return `${c.width}x${c.height} ${Array.from(new Uint8Array(digest), (b) => b.toString(16).padStart(2, '0')).join('')}`;
   });
 }
 
@@ -207,13 +222,131 @@ test('a malformed scene shows its message and keeps the last good scene', async 
   await page.close();
 });
 
-test('the docs page renders a widget for every implemented method', async () => {
+test('every malformed scene of tests/robustness/bad is refused by the wasm API and by the page', async () => {
+  const t0 = performance.now();
+  const names = (await readdir(badDir)).filter((n) => n.endsWith('.json')).sort();
+  assert.ok(names.length >= 40, `only ${names.length} bad scenes`);
+  // The bytes as the page would receive them as text: invalid UTF-8 becomes U+FFFD and a BOM is
+  // kept (as String::from_utf8_lossy does in crates/spherekit-snapshot/tests/robustness.rs).
+  // As there, the .txt is the CLI's message for a file it cannot read as UTF-8 text, so such a
+  // scene must only be refused here.
+  const cases = await Promise.all(names.map(async (name) => {
+    const bytes = await readFile(path.join(badDir, name));
+    let utf8 = true;
+    try {
+      new TextDecoder('utf-8', { fatal: true }).decode(bytes);
+    } catch {
+      utf8 = false;
+    }
+    const text = new TextDecoder('utf-8', { ignoreBOM: true }).decode(bytes);
+    const want = (await readFile(path.join(badDir, name.replace(/\.json$/, '.txt')), 'utf8')).replace(/\n+$/, '');
+    return { name, text, want, utf8 };
+  }));
+  const page = await newPage();
+  const good = await readFile(path.join(goldenDir, 'geodesic_s3.json'), 'utf8');
+  await openPlayground(page, sceneUrl(good, `?size=${GOLDEN_SIZE}`));
+  assert.equal(await page.textContent('#error'), '', 'the good scene loads');
+  const problems = [];
+  const bad = (c, what) => problems.push(`${c.name}: ${what}`);
+  const fine = (c, message) => (c.utf8 ? message.includes(c.want) : true)
+    && !message.includes('\n') && !/panicked|unreachable|RuntimeError/.test(message);
+
+  // 1. The wasm API, from the module web/main.js initialised.
+  const api = await page.evaluate(async (cases) => {
+    const sk = await import('./pkg/spherekit_wasm.js');
+    const shared = window.spherekitPage.handle() instanceof sk.Playground;
+    const outcome = (f) => {
+      try {
+        const v = f();
+        v?.free?.();
+        return { threw: false };
+      } catch (e) {
+        return { threw: true, error: e instanceof Error, kind: e?.constructor?.name, message: e instanceof Error ? e.message : String(e) };
+      }
+    };
+    const results = cases.map((c) => ({ validate: outcome(() => sk.validate(c.text)), playground: outcome(() => new sk.Playground(c.text)) }));
+    return { shared, results };
+  }, cases);
+  assert.ok(api.shared, 'import() inside the page gives the module instance web/main.js initialised');
+  api.results.forEach((r, i) => {
+    const c = cases[i];
+    for (const [fn, o] of Object.entries(r)) {
+      if (!o.threw) bad(c, `${fn} accepted the scene`);
+      else if (!o.error || !fine(c, o.message)) bad(c, `${fn} threw ${o.kind} ${JSON.stringify(o.message)}, expected one line containing ${JSON.stringify(c.want)}`);
+    }
+    if (r.validate.threw && r.playground.threw && r.validate.message !== r.playground.message) {
+      bad(c, `validate says ${JSON.stringify(r.validate.message)} but new Playground says ${JSON.stringify(r.playground.message)}`);
+    }
+  });
+
+  // 2. The page: each scene into the Scene JSON box, Apply; the message is shown and the last
+  // good scene stays (the same scene, URL and pixels once the page has redrawn).
+  const ui = await page.evaluate(async ({ cases, good }) => {
+    const frames = () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    const $ = (id) => document.getElementById(id);
+    const pixels = () => {
+      const c = $('scene');
+      return c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    };
+    const apply = (text) => {
+      $('json').value = text;
+      $('apply-json').dispatchEvent(new MouseEvent('click', { bubbles: true }));
+    };
+    const state = () => ({ scene: window.spherekitPage.handle().scene_json(), hash: location.hash });
+    const base = state();
+    const before = pixels();
+    const results = [];
+    for (const c of cases) {
+      apply(c.text);
+      const error = $('error').textContent;
+      const hidden = $('error').hidden;
+      await frames();
+      const after = pixels();
+      let changed = after.length === before.length ? 0 : -1;
+      for (let i = 0; changed >= 0 && i < after.length; i++) if (after[i] !== before[i]) changed++;
+      const now = state();
+      results.push({ error, hidden, changed, sameScene: now.scene === base.scene, sameHash: now.hash === base.hash });
+      if (error === '' || now.scene !== base.scene) {
+        apply(good); // accepted: put the good scene back for the next case
+        await frames();
+      }
+    }
+    return results;
+  }, { cases: cases.map(({ text }) => ({ text })), good });
+  ui.forEach((r, i) => {
+    const c = cases[i];
+    if (r.error === '') {
+      bad(c, 'the page accepted the scene');
+      return;
+    }
+    const shown = r.error.replace(/^error: /, '');
+    if (!r.error.startsWith('error: ') || r.hidden || !fine(c, shown)) bad(c, `the page shows ${JSON.stringify(r.error)}${r.hidden ? ' (hidden)' : ''}, expected one line containing ${JSON.stringify(c.want)}`);
+    const made = api.results[i].playground;
+    if (made.threw && shown !== made.message) bad(c, `the page shows ${JSON.stringify(r.error)} but the wasm API says ${JSON.stringify(made.message)}`);
+    if (!r.sameScene || !r.sameHash) bad(c, 'the last good scene was replaced');
+    if (r.changed !== 0) bad(c, `the canvas changed (${r.changed} channels)`);
+  });
+  assert.deepEqual(problems, [], `${problems.length} problems with ${cases.length} bad scenes:\n${problems.join('\n')}`);
+
+  // The page still works: a preset clears the error and draws; Apply takes a good scene again.
+  const goodHash = await canvasHash(page);
+  await page.selectOption('#preset', 'nlerp_s2');
+  assert.equal(await page.textContent('#error'), '', 'a preset clears the error');
+  assert.notEqual(await canvasHash(page), goodHash, 'the preset is drawn');
+  await page.fill('#json', good);
+  await page.click('#apply-json');
+  assert.equal(await page.textContent('#error'), '', 'Apply takes a good scene');
+  assert.equal(await canvasHash(page), goodHash, 'the good scene is drawn as before');
+  console.log(`malformed scenes: ${cases.length} refused by validate, new Playground and the page in ${((performance.now() - t0) / 1000).toFixed(1)} s`);
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('the docs page renders a widget for every method', async () => {
   const page = await newPage({ width: 1100, height: 900 });
   await page.goto(`${origin}/docs.html`);
   await page.waitForFunction(() => [...document.querySelectorAll('spherekit-view')].every((w) => w.dataset.state));
   const widgets = await page.evaluate(async () => {
-    const sk = await import('./pkg/spherekit_wasm.js');
-    const implemented = new Set(JSON.parse(sk.methods()).filter((m) => m.implemented !== false).map((m) => m.id));
     return [...document.querySelectorAll('section.method')].map((s) => {
       const w = s.querySelector('spherekit-view');
       const canvas = w.querySelector('canvas');
@@ -222,21 +355,16 @@ test('the docs page renders a widget for every implemented method', async () => 
         const d = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
           for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] < 600) inked++;
       }
-      return { method: s.dataset.method, implemented: implemented.has(s.dataset.method), state: w.dataset.state, inked, text: w.textContent };
+      return { method: s.dataset.method, state: w.dataset.state, inked, text: w.textContent };
     });
   });
   const methods = await page.evaluate(async () => JSON.parse((await import('./pkg/spherekit_wasm.js')).methods()).map((m) => m.id));
   assert.deepEqual(widgets.map((w) => w.method).sort(), methods.slice().sort(), 'one widget per method');
   for (const w of widgets) {
-    if (w.implemented) {
-      assert.equal(w.state, 'ready', `${w.method}: rendered`);
-      assert.ok(w.inked > 500, `${w.method}: the canvas shows the scene (${w.inked} dark pixels)`);
-    } else {
-      assert.equal(w.state, 'error', `${w.method}: not implemented`);
-      assert.match(w.text, /is not implemented yet/);
-    }
+    assert.equal(w.state, 'ready', `${w.method}: rendered (${w.text})`);
+    assert.ok(w.inked > 500, `${w.method}: the canvas shows the scene (${w.inked} dark pixels)`);
   }
-  console.log(`docs widgets: ${widgets.filter((w) => w.state === 'ready').length} rendered, ${widgets.filter((w) => w.state !== 'ready').length} not implemented yet (${widgets.filter((w) => w.state !== 'ready').map((w) => w.method).join(', ')})`);
+  console.log(`docs widgets: ${widgets.length} rendered`);
   // Turn one widget and play it.
   const first = page.locator('spherekit-view').first();
   const canvas = first.locator('canvas').first();
@@ -250,6 +378,46 @@ test('the docs page renders a widget for every implemented method', async () => 
   await first.locator('button').click();
   await page.waitForTimeout(400);
   await page.screenshot({ path: path.join(outDir, 'docs.png'), fullPage: true });
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('the parameter controls edit the scene', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const beta = {
+    space: 'S2', method: 'beta',
+    points: [[1, 0, 0], [0.6, 0.8, 0], [0, 0.6, 0.8], [-0.6, 0, 0.8], [-0.8, -0.6, 0]],
+    params: { beta1: [1, 0.5, 2, 1, 1] },
+  };
+  await openPlayground(page, sceneUrl(JSON.stringify(beta)));
+  await page.screenshot({ path: path.join(outDir, 'playground-beta-controls.png') });
+  const params = () => page.evaluate(() => JSON.parse(window.spherekitPage.handle().curve_json(0)).params ?? {});
+  const sliders = page.locator('#curves input[type=range]');
+  assert.equal(await sliders.count(), 6, 'five β₁ sliders (one per point) and one β₂');
+  // Move β₁ at point 1 and release: the scene follows and the picture changes.
+  const before = await canvasHash(page);
+  await sliders.nth(1).evaluate((el) => {
+    el.value = '1.5';
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+    el.dispatchEvent(new Event('change', { bubbles: true }));
+  });
+  assert.deepEqual((await params()).beta1, [1, 1.5, 2, 1, 1]);
+  assert.notEqual(await canvasHash(page), before, 'redrawn');
+  // One β₂ for every joint, then one per joint.
+  await page.getByLabel('β₂ tension per joint').check();
+  assert.deepEqual((await params()).beta2, [0, 0, 0, 0, 0]);
+  await page.getByLabel('β₁ bias per joint').uncheck();
+  assert.equal((await params()).beta1, 1, 'back to one value (the first)');
+  // A method with knots: typed in, checked by the scene format.
+  await page.locator('#curves select').first().selectOption('catmull-rom');
+  const knots = page.getByLabel('Knots of curve 0');
+  await knots.fill('0, 1, 4');
+  await knots.dispatchEvent('change');
+  assert.equal(await page.textContent('#error'), '');
+  assert.deepEqual(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).knots, [0, 1, 4]);
+  await knots.fill('0, 2, 1');
+  await knots.dispatchEvent('change');
+  assert.match(await page.textContent('#error'), /^error: knots/);
   assert.deepEqual(page.errors, [], 'no page errors');
   await page.close();
 });

@@ -8,8 +8,8 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use spherekit::scene::Scene;
 
-/// A 512×512 S³ scene: three body-axis trajectories (flattened to 2e-4 rad, about 2 000
-/// points each) and the speed plot strip.
+/// A 512×512 S³ scene: three body-axis trajectories (flattened to 2e-4 rad, about 300 points
+/// each) and the speed plot strip.
 fn s3_scene() -> Scene {
     Scene::from_json(
         r#"{"space":"S3","method":"geodesic",
@@ -23,8 +23,17 @@ fn s3_scene() -> Scene {
 fn render(c: &mut Criterion) {
     let scene = s3_scene();
     let curves = scene.build().expect("builds");
+    // The sphere and graticule are kept per thread for the last size and camera, as when a
+    // point is dragged; alternating two sizes redraws them every time, as after a camera move.
     c.bench_function("render s3 512 with plot", |b| {
         b.iter(|| spherekit_render::render_built(black_box(&scene), &curves, 512))
+    });
+    let mut size = 512;
+    c.bench_function("render s3 512/513 with plot, backdrop redrawn", |b| {
+        b.iter(|| {
+            size = 1025 - size;
+            spherekit_render::render_built(black_box(&scene), &curves, size)
+        })
     });
 }
 

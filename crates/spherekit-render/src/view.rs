@@ -92,11 +92,11 @@ impl View {
         };
         if let Some(k) = map
             .keys()
-            .find(|k| !["camera", "plot", "frames", "accuracy"].contains(&k.as_str()))
+            .find(|k| !["camera", "plot", "frames", "accuracy", "axes"].contains(&k.as_str()))
         {
             return Err(bad(
                 k,
-                "unknown view option (camera, plot, frames, accuracy)",
+                "unknown view option (camera, plot, frames, accuracy, axes)",
             ));
         }
         let camera = match map.get("camera") {

@@ -61,3 +61,44 @@ fn sizes_outside_the_range_are_errors() {
     assert!(matches!(render(&s, 4097), Err(RenderError::Size(4097))));
     assert!(render(&s, 16).is_ok());
 }
+
+#[test]
+fn view_axes_choose_the_traced_body_axes() {
+    let with_axes = |axes: &str| {
+        format!(
+            r#"{{"space":"S3","method":"squad","points":[[1,0,0,0],[0.7071,0.7071,0,0],[0,0,1,0]],
+                "view":{{"plot":"none"{axes}}}}}"#
+        )
+    };
+    let draw = |axes: &str| {
+        render(&scene(&with_axes(axes)), 160)
+            .expect("renders")
+            .take()
+    };
+    let all = draw("");
+    assert!(
+        all == draw(r#","axes":["x","y","z"]"#),
+        "default: all three"
+    );
+    let (x, z) = (draw(r#","axes":["x"]"#), draw(r#","axes":["z"]"#));
+    assert!(
+        x != all && z != all && x != z,
+        "each choice draws other trajectories"
+    );
+    for (axes, message) in [
+        (r#","axes":[]"#, "view.axes: must be a list of body axes"),
+        (r#","axes":["w"]"#, "view.axes: must be a list of body axes"),
+        (r#","axes":"x""#, "view.axes: must be a list of body axes"),
+    ] {
+        let text = with_axes(axes);
+        let err = render(&scene(&text), 160).expect_err(axes).to_string();
+        assert!(err.contains(message), "{axes}: {err}");
+    }
+    let s2 =
+        r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"view":{"axes":["x"]}}"#;
+    let err = render(&scene(s2), 160).expect_err("S2").to_string();
+    assert!(
+        err.contains("view.axes: body axes are drawn for S3 scenes only"),
+        "{err}"
+    );
+}

@@ -6,7 +6,7 @@
 
 use core::fmt;
 
-use serde_json::Value;
+use serde_json::{Map, Value};
 use spherekit::UnitQuat;
 use spherekit::scene::MAX_DIMENSION;
 
@@ -108,4 +108,57 @@ pub(crate) fn flatten_field(one: &Value, field: &str) -> Result<Vec<f64>, InputE
         }
     }
     Ok(out)
+}
+
+/// A point inserted before, or removed at, an index of a curve's `points`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum PointEdit {
+    Insert(usize),
+    Remove(usize),
+}
+
+/// Keeps a curve's per-point lists in step with an edit of its `count` points, so that adding
+/// or deleting a point in the page does not make `knots` or a per-joint parameter list (β₁, β₂,
+/// γ) the wrong length. A list of `len ≤ count` numbers is taken to skip `(count − len) / 2`
+/// points at each end (Catmull-Rom's steering end points have no knot; Gamma's γ list starts at
+/// the second interior knot): the entry at the matching position is removed, or one is inserted
+/// there, midway between its neighbours for `knots` (one spacing beyond an end), a copy of its
+/// neighbour for a parameter. Lists of another shape are left for the scene's validation.
+pub(crate) fn follow_points(curve: &mut Map<String, Value>, count: usize, edit: PointEdit) {
+    if let Some(Value::Array(knots)) = curve.get_mut("knots") {
+        follow(knots, true, count, edit);
+    }
+    if let Some(Value::Object(params)) = curve.get_mut("params") {
+        for value in params.values_mut() {
+            if let Value::Array(list) = value {
+                follow(list, false, count, edit);
+            }
+        }
+    }
+}
+
+fn follow(list: &mut Vec<Value>, is_knots: bool, count: usize, edit: PointEdit) {
+    let numbers: Option<Vec<f64>> = list.iter().map(Value::as_f64).collect();
+    let Some(x) = numbers else { return };
+    let len = x.len();
+    if len == 0 || len > count {
+        return;
+    }
+    let skip = (count - len) / 2;
+    match edit {
+        PointEdit::Insert(index) => {
+            let j = index.saturating_sub(skip).min(len);
+            let value = match (is_knots, len) {
+                (false, _) => x[j.min(len - 1)],
+                (true, 1) => return,
+                (true, _) if j == 0 => 2.0 * x[0] - x[1],
+                (true, _) if j == len => 2.0 * x[len - 1] - x[len - 2],
+                (true, _) => 0.5 * (x[j - 1] + x[j]),
+            };
+            list.insert(j, Value::from(value));
+        }
+        PointEdit::Remove(index) => {
+            list.remove(index.saturating_sub(skip).min(len - 1));
+        }
+    }
 }

@@ -31,6 +31,7 @@ mod input;
 include!(concat!(env!("OUT_DIR"), "/presets.rs"));
 
 pub use input::InputError;
+use input::PointEdit;
 
 /// Installs the panic hook that reports a panic to the browser console (called on load).
 #[wasm_bindgen(start)]
@@ -351,7 +352,7 @@ impl Playground {
         self.edit_points(curve, |points| {
             let slot = points.get_mut(index).ok_or(InputError::NoPoint(index))?;
             *slot = p;
-            Ok(())
+            Ok(None)
         })
     }
 
@@ -372,7 +373,7 @@ impl Playground {
                 return Err(InputError::NoPoint(index));
             }
             points.insert(index, p);
-            Ok(())
+            Ok(Some(PointEdit::Insert(index)))
         })
     }
 
@@ -387,7 +388,7 @@ impl Playground {
                 return Err(InputError::NoPoint(index));
             }
             points.remove(index);
-            Ok(())
+            Ok(Some(PointEdit::Remove(index)))
         })
     }
 
@@ -773,13 +774,16 @@ impl Playground {
     fn edit_points(
         &mut self,
         curve: usize,
-        edit: impl FnOnce(&mut Vec<Value>) -> Result<(), InputError>,
+        edit: impl FnOnce(&mut Vec<Value>) -> Result<Option<PointEdit>, InputError>,
     ) -> Result<(), JsError> {
         let mut doc = self.doc.clone();
         let c = curve_doc_mut(&mut doc, curve)?;
-        match c.get_mut("points") {
-            Some(Value::Array(points)) => edit(points)?,
+        let (count, change) = match c.get_mut("points") {
+            Some(Value::Array(points)) => (points.len(), edit(points)?),
             _ => return Err(InputError::NoCurve(curve).into()),
+        };
+        if let Some(change) = change {
+            input::follow_points(c, count, change);
         }
         self.apply(doc)
     }

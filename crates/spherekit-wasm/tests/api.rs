@@ -121,6 +121,57 @@ fn playground_rebuilds_only_what_changed() {
 }
 
 #[wasm_bindgen_test]
+fn adding_and_removing_points_keeps_knots_and_per_joint_lists_in_step() {
+    let curve = |pg: &Playground| -> serde_json::Value {
+        serde_json::from_str(&pg.curve_json(0).unwrap()).unwrap()
+    };
+    let numbers = |v: &serde_json::Value| -> Vec<f64> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect()
+    };
+    // Catmull-Rom on S2: knots for c0..cn (the end points have none).
+    let mut pg = Playground::new(
+        r#"{"space":"S2","method":"catmull-rom","knots":[0,1,3],
+            "points":[[1,0,0],[0.8,0.6,0],[0,1,0],[0,0.6,0.8],[0,0,1]]}"#,
+    )
+    .unwrap();
+    pg.insert_point(0, 2, &[0.5, 0.8, 0.3]).unwrap();
+    assert_eq!(numbers(&curve(&pg)["knots"]), vec![0.0, 0.5, 1.0, 3.0]);
+    pg.insert_point(0, 6, &[0.3, 0.0, 1.0]).unwrap();
+    assert_eq!(numbers(&curve(&pg)["knots"]), vec![0.0, 0.5, 1.0, 3.0, 5.0]);
+    pg.remove_point(0, 2).unwrap();
+    assert_eq!(numbers(&curve(&pg)["knots"]), vec![0.0, 1.0, 3.0, 5.0]);
+    // Beta with per-point bias and tension: one value per point.
+    let mut pg = Playground::new(
+        r#"{"space":"S2","method":"beta","points":[[1,0,0],[0.6,0.8,0],[0,0.6,0.8]],
+            "params":{"beta1":[1,0.5,2],"beta2":[0,3,0]}}"#,
+    )
+    .unwrap();
+    pg.insert_point(0, 3, &[-0.6, 0.0, 0.8]).unwrap();
+    let c = curve(&pg);
+    assert_eq!(numbers(&c["params"]["beta1"]), vec![1.0, 0.5, 2.0, 2.0]);
+    assert_eq!(numbers(&c["params"]["beta2"]), vec![0.0, 3.0, 0.0, 0.0]);
+    pg.remove_point(0, 0).unwrap();
+    assert_eq!(numbers(&curve(&pg)["params"]["beta1"]), vec![0.5, 2.0, 2.0]);
+    // Gamma: knots u0..ul and γ1..γ(l-1) for l + 3 points.
+    let mut pg = Playground::new(
+        r#"{"space":"S3","method":"gamma","knots":[0,1,2,4],"params":{"gamma":[0.5,2]},
+            "points":[[1,0,0,0],[0.9,0.3,0.3,0.1],[0.6,0.2,0.7,0.3],[0.3,0.8,0.4,0.3],
+                      [0.2,0.3,0.5,0.8],[0.5,0.1,0.2,0.8]]}"#,
+    )
+    .unwrap();
+    pg.insert_point(0, 6, &[0.1, 0.1, 0.1, 1.0]).unwrap();
+    let c = curve(&pg);
+    assert_eq!(numbers(&c["knots"]), vec![0.0, 1.0, 2.0, 4.0, 6.0]);
+    assert_eq!(numbers(&c["params"]["gamma"]), vec![0.5, 2.0, 2.0]);
+    pg.remove_point(0, 0).unwrap();
+    assert_eq!(numbers(&curve(&pg)["params"]["gamma"]), vec![2.0, 2.0]);
+}
+
+#[wasm_bindgen_test]
 fn picking_and_dragging_use_the_render_projection() {
     let mut pg = Playground::new(S2).unwrap();
     let p = pg.point(0, 0).unwrap();
