@@ -190,3 +190,27 @@ fn printed_procedure_9_4_is_only_c0() {
     let jump = (v_literal - v_left).length() / v_left.length();
     assert!(jump > 1e-2, "literal Procedure 9.4: velocity jump {jump}");
 }
+
+/// (2.13) as printed has `+q₀(r × p)`: it misses the book's own example and is not
+/// orthogonal to its factors; the corrected (all-minus) form, the 4×4 determinant's expansion,
+/// is both.
+#[test]
+fn printed_ternary_product_sign_fails() {
+    let printed = |p: DQuat, q: DQuat, r: DQuat| {
+        let (pv, qv, rv) = (p.xyz(), q.xyz(), r.xyz());
+        let v = -p.w * qv.cross(rv) + q.w * rv.cross(pv) - r.w * pv.cross(qv);
+        DQuat::from_xyzw(v.x, v.y, v.z, pv.dot(qv.cross(rv)))
+    };
+    let (p, q, r) = (
+        DQuat::from_xyzw(2.0, -1.0, 4.0, 1.0),
+        DQuat::from_xyzw(-2.0, 3.0, 1.0, 3.0),
+        DQuat::from_xyzw(1.0, -2.0, 1.0, 0.0),
+    );
+    let wrong = DVec4::from(printed(p, q, r));
+    assert!((wrong - DVec4::new(-26.0, -9.0, 8.0, 11.0)).length() < 1e-13, "{wrong}");
+    let right = DVec4::from(ternary(p, q, r));
+    for f in [p, q, r] {
+        assert!(right.dot(DVec4::from(f)).abs() < 1e-12, "corrected ⟂ factors");
+    }
+    assert!(wrong.dot(DVec4::from(q)).abs() > 1.0, "printed is not orthogonal");
+}
