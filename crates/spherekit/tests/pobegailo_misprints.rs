@@ -207,10 +207,19 @@ fn printed_ternary_product_sign_fails() {
         DQuat::from_xyzw(1.0, -2.0, 1.0, 0.0),
     );
     let wrong = DVec4::from(printed(p, q, r));
-    assert!((wrong - DVec4::new(-26.0, -9.0, 8.0, 11.0)).length() < 1e-13, "{wrong}");
+    assert!(
+        (wrong - DVec4::new(-26.0, -9.0, 8.0, 11.0)).length() < 1e-13,
+        "{wrong}"
+    );
     let right = DVec4::from(ternary(p, q, r));
     for f in [p, q, r] {
-        assert!(right.dot(DVec4::from(f)).abs() < 1e-12, "corrected ⟂ factors");
+        assert!(
+            right.dot(DVec4::from(f)).abs() < 1e-12,
+            "corrected ⟂ factors"
+        );
     }
-    assert!(wrong.dot(DVec4::from(q)).abs() > 1.0, "printed is not orthogonal");
+    assert!(
+        wrong.dot(DVec4::from(q)).abs() > 1.0,
+        "printed is not orthogonal"
+    );
 }
