@@ -220,6 +220,9 @@ function renderPanels() {
       const fields = { ...curve, method: select.value };
       delete fields.points;
       delete fields.params; // parameters belong to the old method
+      // Knots stay only where the new method takes as many (Catmull-Rom and Gamma take n − 2).
+      const n = curve.points.length;
+      if (KNOT_COUNT[select.value]?.(n) !== KNOT_COUNT[curve.method]?.(n)) delete fields.knots;
       if (attempt(() => pg.set_curve(c, JSON.stringify(fields)))) changed();
       else renderPanels();
     });
@@ -339,7 +342,7 @@ function curveControls(c, curve, space) {
       } else {
         controls.push(slider(spec, spec.label, value, (x, live) => setParam(c, spec.name, x, { live })));
       }
-      if (joints > 1) {
+      if (joints > 1 || list) {
         const label = document.createElement('label');
         label.className = 'check muted';
         const box = document.createElement('input');
@@ -363,7 +366,7 @@ function curveControls(c, curve, space) {
     input.setAttribute('aria-label', `Knots of curve ${c}`);
     input.addEventListener('change', () => {
       const text = input.value.trim();
-      setCurveField(c, curve, 'knots', text ? text.split(/[\s,]+/).map(Number) : null);
+      setCurveField(c, curve, 'knots', text ? text.split(/[\s,]+/).filter(Boolean).map(Number) : null);
     });
     label.append(input);
     controls.push(label);

@@ -208,6 +208,16 @@ fn bad_input_exits_2_with_one_line_naming_the_field() {
         ),
         ("null", &[], "invalid type: null, expected a scene object"),
         (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"a.b":1}"#,
+            &[],
+            "invalid scene JSON: unknown field `a.b`",
+        ),
+        (
+            r#"{"space":"S2","method":"geodesic","points":[[1,0,0] [0,1,0]]}"#,
+            &[],
+            "invalid scene JSON: points[0]: expected `,` or `]`",
+        ),
+        (
             r#"{"space":"S2","method":"spline","points":[[1,0,0],[0,1,0]]}"#,
             &[],
             "method: unknown method \"spline\"",

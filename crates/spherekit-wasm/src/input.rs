@@ -123,42 +123,51 @@ pub(crate) enum PointEdit {
 /// points at each end (Catmull-Rom's steering end points have no knot; Gamma's γ list starts at
 /// the second interior knot): the entry at the matching position is removed, or one is inserted
 /// there, midway between its neighbours for `knots` (one spacing beyond an end), a copy of its
-/// neighbour for a parameter. Lists of another shape are left for the scene's validation.
+/// neighbour for a parameter. A parameter list that would become empty becomes its last value
+/// (one number for every joint). Longer lists and lists of non-numbers are left for the
+/// scene's validation to report.
 pub(crate) fn follow_points(curve: &mut Map<String, Value>, count: usize, edit: PointEdit) {
     if let Some(Value::Array(knots)) = curve.get_mut("knots") {
         follow(knots, true, count, edit);
     }
     if let Some(Value::Object(params)) = curve.get_mut("params") {
         for value in params.values_mut() {
-            if let Value::Array(list) = value {
-                follow(list, false, count, edit);
+            if let Value::Array(list) = value
+                && let Some(removed) = follow(list, false, count, edit)
+                && list.is_empty()
+            {
+                *value = Value::from(removed);
             }
         }
     }
 }
 
-fn follow(list: &mut Vec<Value>, is_knots: bool, count: usize, edit: PointEdit) {
-    let numbers: Option<Vec<f64>> = list.iter().map(Value::as_f64).collect();
-    let Some(x) = numbers else { return };
+/// Applies `edit` to one list (see [`follow_points`]); returns the value removed, if any.
+fn follow(list: &mut Vec<Value>, is_knots: bool, count: usize, edit: PointEdit) -> Option<f64> {
+    let x: Vec<f64> = list.iter().map(Value::as_f64).collect::<Option<_>>()?;
     let len = x.len();
     if len == 0 || len > count {
-        return;
+        return None;
     }
     let skip = (count - len) / 2;
     match edit {
         PointEdit::Insert(index) => {
             let j = index.saturating_sub(skip).min(len);
+            // Differences first: no overflow for knots near the largest doubles.
             let value = match (is_knots, len) {
                 (false, _) => x[j.min(len - 1)],
-                (true, 1) => return,
-                (true, _) if j == 0 => 2.0 * x[0] - x[1],
-                (true, _) if j == len => 2.0 * x[len - 1] - x[len - 2],
-                (true, _) => 0.5 * (x[j - 1] + x[j]),
+                (true, 1) => return None,
+                (true, _) if j == 0 => x[0] - (x[1] - x[0]),
+                (true, _) if j == len => x[len - 1] + (x[len - 1] - x[len - 2]),
+                (true, _) => x[j - 1] + 0.5 * (x[j] - x[j - 1]),
             };
             list.insert(j, Value::from(value));
+            None
         }
         PointEdit::Remove(index) => {
-            list.remove(index.saturating_sub(skip).min(len - 1));
+            let k = index.saturating_sub(skip).min(len - 1);
+            list.remove(k);
+            Some(x[k])
         }
     }
 }

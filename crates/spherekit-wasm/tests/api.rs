@@ -169,6 +169,13 @@ fn adding_and_removing_points_keeps_knots_and_per_joint_lists_in_step() {
     assert_eq!(numbers(&c["params"]["gamma"]), vec![0.5, 2.0, 2.0]);
     pg.remove_point(0, 0).unwrap();
     assert_eq!(numbers(&curve(&pg)["params"]["gamma"]), vec![2.0, 2.0]);
+    // Down to one interior knot and below: the list becomes one number, so points can be added
+    // again.
+    pg.remove_point(0, 0).unwrap();
+    pg.remove_point(0, 0).unwrap();
+    assert_eq!(curve(&pg)["params"]["gamma"], serde_json::json!(2.0));
+    pg.insert_point(0, 0, &[1.0, 0.0, 0.0, 0.0]).unwrap();
+    assert_eq!(curve(&pg)["points"].as_array().unwrap().len(), 5);
 }
 
 #[wasm_bindgen_test]

@@ -544,15 +544,14 @@ fn json_error(text: &str, e: &serde_json::Error) -> String {
         .take(e.line() - 1)
         .map(str::len)
         .sum();
-    // serde_json's column counts the bytes of the line read so far.
-    let mut path = json_path_at(text, line_start + e.column());
-    // An unknown key is named by the message: the path is the object holding it.
-    if e.to_string().starts_with("unknown field") {
-        path = path
-            .rsplit_once('.')
-            .map(|(head, _)| head.to_owned())
-            .unwrap_or_default();
+    // serde_json's column counts the bytes of the line read so far; a syntax error is found
+    // at the byte after the culprit (`[1 2]` stops at `2`), so that byte is not scanned.
+    let mut offset = line_start + e.column();
+    if e.classify() == serde_json::error::Category::Syntax {
+        offset = offset.saturating_sub(1);
     }
+    // An unknown key is named by the message: the path is the object holding it.
+    let path = json_path_at(text, offset, e.to_string().starts_with("unknown field"));
     if path.is_empty() {
         e.to_string()
     } else {
@@ -561,8 +560,9 @@ fn json_error(text: &str, e: &serde_json::Error) -> String {
 }
 
 /// The JSON path (`curves[0].points[2]`) of the value being read at byte `offset` of `text`,
-/// found by scanning the brackets, keys and commas before it; empty at the top level.
-fn json_path_at(text: &str, offset: usize) -> String {
+/// found by scanning the brackets, keys and commas before it; empty at the top level. With
+/// `parent`, the path of the object whose key is being read (without that key).
+fn json_path_at(text: &str, offset: usize, parent: bool) -> String {
     enum Frame {
         Object {
             key: Option<String>,
@@ -608,6 +608,9 @@ fn json_path_at(text: &str, offset: usize) -> String {
             _ => {}
         }
         i += 1;
+    }
+    if parent && matches!(stack.last(), Some(Frame::Object { .. })) {
+        stack.pop();
     }
     let mut path = String::new();
     for (depth, frame) in stack.iter().enumerate() {
