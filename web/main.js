@@ -538,7 +538,7 @@ function renderContinuity() {
       row.insertCell().textContent = fmt(j.c0);
       row.insertCell().textContent = fmt(j.c1);
       row.insertCell().textContent = fmt(j.c2);
-      row.insertCell().textContent = j.order === null ? 'broken' : `C${'⁰¹²'[j.order]}`;
+      row.insertCell().textContent = j.class;
     }
   });
   if (!body.rows.length) {

@@ -391,6 +391,9 @@ test('the parameter controls edit the scene', async () => {
   };
   await openPlayground(page, sceneUrl(JSON.stringify(beta)));
   await page.screenshot({ path: path.join(outDir, 'playground-beta-controls.png') });
+  // β₁ ≠ 1 at points 1 and 2: direction continuous, speed not; β₁ = 1 at point 3: C¹.
+  const classes = await page.$$eval('#continuity tbody tr', (rows) => rows.map((r) => r.cells[5].textContent));
+  assert.deepEqual(classes, ['G¹', 'G¹', 'C¹']);
   const params = () => page.evaluate(() => JSON.parse(window.spherekitPage.handle().curve_json(0)).params ?? {});
   const sliders = page.locator('#curves input[type=range]');
   assert.equal(await sliders.count(), 6, 'five β₁ sliders (one per point) and one β₂');

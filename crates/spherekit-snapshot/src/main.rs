@@ -25,7 +25,7 @@ commands:
       (`-` reads the scene from standard input).
       --deriv        also print velocity, acceleration (and angular velocity on S3)
       --continuity   also print the jumps of point, velocity and acceleration
-                     at every joint (c0, c1, c2)
+                     at every joint (c0, c1, c2; g1 of the unit tangent)
       --samples N    N uniform samples over the domain (overrides the scene)
   render SCENE.json -o OUT.png [--size N]
       Draw the scene (sphere, curves, speed plot) into a PNG, N pixels wide

@@ -165,9 +165,11 @@ pub fn sample_array(scene: &str, curve: usize, field: &str) -> Result<Vec<f64>, 
 }
 
 /// The continuity report of every curve as JSON: per curve a list of interior joints
-/// `{ "t", "c0", "c1", "c2", "order" }` with the jumps of point, first and second derivative
-/// (ambient norms of left minus right one-sided limits, [`spherekit::continuity`]) and the
-/// highest order k ≤ 2 whose jumps are all below 1e-9 (`null` when the points differ).
+/// `{ "t", "c0", "c1", "c2", "g1", "order", "class" }` with the jumps of point, first and second
+/// derivative and unit tangent (ambient norms of left minus right one-sided limits,
+/// [`spherekit::continuity`]), the highest order k ≤ 2 whose jumps are all below 1e-9
+/// (`null` when the points differ), and `class`: `"C²"`, `"C¹"`, `"G¹"` (direction continuous,
+/// speed not), `"C⁰"` or `"broken"`.
 ///
 /// # Errors
 ///
@@ -192,8 +194,16 @@ fn continuity_json(curves: &[BuiltCurve]) -> Value {
             report
                 .iter()
                 .map(|j| {
-                    json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2,
-                            "order": j.order(CONTINUITY_TOLERANCE) })
+                    let order = j.order(CONTINUITY_TOLERANCE);
+                    let class = match order {
+                        None => "broken",
+                        Some(0) if j.g1 <= CONTINUITY_TOLERANCE => "G¹",
+                        Some(0) => "C⁰",
+                        Some(1) => "C¹",
+                        Some(_) => "C²",
+                    };
+                    json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2, "g1": j.g1,
+                            "order": order, "class": class })
                 })
                 .collect(),
         )

@@ -82,6 +82,18 @@ fn continuity_reports_the_joints() {
     let joint = &report[0][0];
     assert_eq!(joint["t"], 1.0, "one interior joint");
     assert_eq!(joint["order"], 0, "a geodesic polyline is C0 only");
+    assert_eq!(joint["class"], "C⁰", "with a corner");
+    // A Beta spline with bias β₁ ≠ 1 at a joint: the speed jumps, the direction does not.
+    let beta = r#"{"space":"S2","method":"beta","points":[[1,0,0],[0.6,0.8,0],[0,0.6,0.8],[-0.6,0,0.8]],
+        "params":{"beta1":[1,0.5,1,1]}}"#;
+    let report: serde_json::Value = serde_json::from_str(&continuity(beta).unwrap()).unwrap();
+    let classes: Vec<&str> = report[0]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|j| j["class"].as_str().unwrap())
+        .collect();
+    assert_eq!(classes, ["G¹", "C¹"], "β₁ = 0.5 at t = 1, 1 at t = 2");
 }
 
 #[wasm_bindgen_test]

@@ -12,7 +12,9 @@ use crate::manifold::Manifold;
 /// Each jump is the ambient Euclidean norm of the difference between the one-sided limits
 /// ([`Side::Left`] minus [`Side::Right`]): `c0` of the point, `c1` of the first derivative, `c2`
 /// of the second derivative, all with respect to the curve parameter. A curve is Cᵏ at the joint
-/// when `c0 … ck` vanish (to rounding; typically below 1e-12 for exact constructions).
+/// when `c0 … ck` vanish (to rounding; typically below 1e-12 for exact constructions). `g1` is
+/// the jump of the unit tangent: a curve that is continuous with `g1` ≈ 0 but `c1` > 0 is G¹
+/// (its direction is continuous, its speed jumps), as Beta splines with β₁ ≠ 1 are.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JointContinuity {
     /// The joint parameter.
@@ -23,6 +25,9 @@ pub struct JointContinuity {
     pub c1: f64,
     /// `|c″(t⁻) − c″(t⁺)|`.
     pub c2: f64,
+    /// `|c′(t⁻)/|c′(t⁻)| − c′(t⁺)/|c′(t⁺)||`, between 0 and 2; equal to `c1` where a one-sided
+    /// velocity vanishes (no direction to compare).
+    pub g1: f64,
 }
 
 impl JointContinuity {
@@ -56,6 +61,7 @@ impl JointContinuity {
 /// assert_eq!(report[0].t, 1.0);
 /// assert!(report[0].c0 < 1e-15); // continuous …
 /// assert!(report[0].c1 > 1.0); // … with a corner
+/// assert!(report[0].g1 > 1.0); // the direction turns by 90°: not even G¹
 /// assert_eq!(report[0].order(1e-12), Some(0));
 /// ```
 #[must_use]
@@ -69,11 +75,19 @@ pub fn continuity<C: Curve + ?Sized>(curve: &C) -> Vec<JointContinuity> {
         .map(|&t| {
             let l = curve.jet_at(t, Side::Left);
             let r = curve.jet_at(t, Side::Right);
+            let c1 = (l.velocity.clone() - r.velocity.clone()).length();
+            let (sl, sr) = (l.velocity.length(), r.velocity.length());
+            let g1 = if sl > 0.0 && sr > 0.0 {
+                (l.velocity * (1.0 / sl) - r.velocity * (1.0 / sr)).length()
+            } else {
+                c1
+            };
             JointContinuity {
                 t,
                 c0: (l.point.to_vector() - r.point.to_vector()).length(),
-                c1: (l.velocity - r.velocity).length(),
+                c1,
                 c2: (l.acceleration - r.acceleration).length(),
+                g1,
             }
         })
         .collect()

@@ -786,8 +786,9 @@ impl Scene {
     }
 
     /// [`sample_json`](Self::sample_json) with every option; `continuity` adds
-    /// `continuity: [{ "t", "c0", "c1", "c2" }, …]`, the jumps of the point and of the first and
-    /// second derivatives at each interior joint (see [`continuity`](crate::continuity)).
+    /// `continuity: [{ "t", "c0", "c1", "c2", "g1" }, …]`, the jumps of the point, of the first
+    /// and second derivatives and of the unit tangent at each interior joint (see
+    /// [`continuity`](crate::continuity)).
     #[must_use]
     pub fn sample_json_with(&self, curves: &[BuiltCurve], options: SampleOptions) -> Value {
         let one = |spec: &CurveSpec, curve: &BuiltCurve| {
@@ -912,7 +913,7 @@ impl<P: ScenePoint> Built<P> {
         if options.continuity {
             let joints: Vec<Value> = crate::continuity(&*self.curve)
                 .iter()
-                .map(|j| json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2 }))
+                .map(|j| json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2, "g1": j.g1 }))
                 .collect();
             out.insert("continuity".into(), Value::Array(joints));
         }

@@ -142,6 +142,17 @@ fn check_g1<P: Manifold>(c: &BetaSpline<P>) {
         let ur = r.velocity * (1.0 / sr);
         assert!((ul - ur).length() < 1e-10, "unit tangents at joint {i}");
     }
+    // The continuity report says the same: g1 vanishes, c1 only where β₁ = 1.
+    for (j, report) in spherekit::continuity(c).iter().enumerate() {
+        assert!(report.g1 < 1e-10, "report: G¹ at joint {}", j + 1);
+        let b = c.beta1()[j + 1];
+        assert_eq!(
+            report.c1 < 1e-9,
+            (b - 1.0).abs() < 1e-12,
+            "report: C¹ iff β₁ = 1 (joint {})",
+            j + 1
+        );
+    }
 }
 
 /// Signed geodesic curvature on S² and the speed.
