@@ -5,7 +5,7 @@ set shell := ["bash", "-euo", "pipefail", "-c"]
 default:
     @just --list
 
-# The main job: sample an example scene (orientations on S³) with the CLI
+# Sample an example scene (orientations on S³) with the CLI
 demo:
     cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- sample examples/orientations.json --deriv
 
