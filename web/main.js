@@ -667,11 +667,14 @@ async function bench() {
   const canvas = document.createElement('canvas');
   const times = [];       // rebuild + render + 4 000 samples
   const renderTimes = []; // rebuild + render
+  const rebuildTimes = []; // set_point alone
+  const sampleTimes = []; // sample_array alone
   for (let f = 0; f < 110; f++) {
     const key = keys[7].slice();
     key[1] += 0.01 * Math.sin(f);
     const t0 = performance.now();
     pg.set_point(0, 7, new Float64Array(key)); // rebuilds the curve
+    const tb = performance.now();
     pg.draw(canvas, 800);                       // renders and draws one frame
     const t1 = performance.now();
     sk.sample_array(pg.scene_json(), 0, 'points'); // 4 000 samples of the curve
@@ -679,6 +682,8 @@ async function bench() {
     if (f >= 10) {
       times.push(t2 - t0);
       renderTimes.push(t1 - t0);
+      rebuildTimes.push(tb - t0);
+      sampleTimes.push(t2 - t1);
     }
     await new Promise((r) => setTimeout(r, 0));
   }
@@ -692,6 +697,8 @@ async function bench() {
     medianMs: median(times),
     maxMs: Math.max(...times),
     medianRenderMs: median(renderTimes),
+    medianRebuildMs: median(rebuildTimes),
+    medianSampleMs: median(sampleTimes),
     builds: pg.builds(),
   };
   pg.free();

@@ -5,10 +5,9 @@
 //! and the far hemisphere.
 
 use spherekit::glam::DVec3;
-use tiny_skia::{
-    Color, FillRule, GradientStop, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Point,
-    RadialGradient, SpreadMode, Stroke, StrokeDash, Transform,
-};
+use tiny_skia::{Pixmap, Point};
+
+use crate::stroke::{Cap, Pen, Strokes, blend, length};
 
 /// An opaque colour.
 pub(crate) type Rgb = [u8; 3];
@@ -143,111 +142,59 @@ impl Canvas {
     /// [`Canvas::draw`] draws on (see `render_built`).
     pub(crate) fn draw_backdrop(&self, pixmap: &mut Pixmap) {
         let (cx, cy, r) = self.disc();
-        // Flat light fill with a darker limb: concentric, so it compresses well in PNG
-        // (a gradient over the whole disc costs ~40 KiB per 512 px image). The gradient
-        // is painted on the outer ring only: the shader costs ~20× a solid fill per pixel.
-        if let Some(disc) = PathBuilder::from_circle(cx, cy, r) {
-            pixmap.fill_path(
-                &disc,
-                &solid(SPHERE_FILL, 1.0),
-                FillRule::Winding,
-                Transform::identity(),
-                None,
-            );
-        }
-        let ring = {
-            let mut pb = PathBuilder::new();
-            pb.push_circle(cx, cy, r);
-            pb.push_circle(cx, cy, LIMB_START * r);
-            pb.finish()
-        };
-        let shader = RadialGradient::new(
-            Point::from_xy(cx, cy),
-            0.0,
-            Point::from_xy(cx, cy),
-            r,
-            vec![
-                GradientStop::new(LIMB_START, rgb(SPHERE_FILL)),
-                GradientStop::new(1.0, rgb(SPHERE_LIMB)),
-            ],
-            SpreadMode::Pad,
-            Transform::identity(),
-        );
-        if let (Some(ring), Some(shader)) = (ring, shader) {
-            let paint = Paint {
-                shader,
-                ..Paint::default()
-            };
-            pixmap.fill_path(
-                &ring,
-                &paint,
-                FillRule::EvenOdd,
-                Transform::identity(),
-                None,
-            );
-        }
-        for item in self.back.iter().chain(&self.front) {
-            self.draw_item(pixmap, item);
-        }
+        shade_disc(pixmap, cx, cy, r);
+        Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+            for item in self.back.iter().chain(&self.front) {
+                self.draw_item(pixmap, strokes, item);
+            }
+        });
     }
 
     /// Draws everything on the far side, the silhouette, then the near side.
-    pub(crate) fn draw(&self, pixmap: &mut Pixmap) {
+    pub(crate) fn draw(&self, pixmap: &mut Pixmap, strokes: &mut Strokes) {
         for item in &self.back {
-            self.draw_item(pixmap, item);
+            self.draw_item(pixmap, strokes, item);
         }
+        // The silhouette.
         let (cx, cy, r) = self.disc();
-        if let Some(disc) = PathBuilder::from_circle(cx, cy, r) {
-            let mut rim = Paint::default();
-            rim.set_color_rgba8(0x5b, 0x66, 0x73, 0xff);
-            let stroke = Stroke {
-                width: 1.4 * self.scale,
-                ..Stroke::default()
-            };
-            pixmap.stroke_path(&disc, &rim, &stroke, Transform::identity(), None);
-        }
+        let rim: Vec<Point> = (0..=360)
+            .map(|i| {
+                let a = std::f32::consts::TAU * (i % 360) as f32 / 360.0;
+                Point::from_xy(cx + r * libm::cosf(a), cy + r * libm::sinf(a))
+            })
+            .collect();
+        strokes.polyline(&rim, Pen::round(1.4 * self.scale));
+        strokes.paint(pixmap, [0x5b, 0x66, 0x73], 1.0);
         for item in &self.front {
-            self.draw_item(pixmap, item);
+            self.draw_item(pixmap, strokes, item);
         }
     }
 
-    fn draw_item(&self, pixmap: &mut Pixmap, item: &Item) {
+    fn draw_item(&self, pixmap: &mut Pixmap, strokes: &mut Strokes, item: &Item) {
         match item {
-            Item::Line(pts, style, front) => self.draw_line(pixmap, pts, *style, *front),
+            Item::Line(pts, style, front) => {
+                let alpha = if *front {
+                    style.alpha
+                } else {
+                    style.back_alpha
+                };
+                if alpha <= 0.0 {
+                    return;
+                }
+                let dashed = !front && style.back_dashed;
+                let pen = Pen {
+                    width: style.width * self.scale * if *front { 1.0 } else { 0.8 },
+                    cap: if dashed { Cap::Butt } else { Cap::Round },
+                    dash: dashed.then_some([5.0 * self.scale, 4.0 * self.scale]),
+                };
+                strokes.polyline(pts, pen);
+                strokes.paint(pixmap, style.color, alpha);
+            }
             Item::Marker(p, shape, color, size, front) => {
-                draw_marker(pixmap, *p, *shape, *color, *size * self.scale, *front);
+                let size = *size * self.scale;
+                draw_marker(pixmap, strokes, *p, *shape, *color, size, *front);
             }
         }
-    }
-
-    fn draw_line(&self, pixmap: &mut Pixmap, pts: &[Point], style: LineStyle, front: bool) {
-        let mut pb = PathBuilder::new();
-        pb.move_to(pts[0].x, pts[0].y);
-        for p in &pts[1..] {
-            pb.line_to(p.x, p.y);
-        }
-        let Some(path) = pb.finish() else { return };
-        let alpha = if front { style.alpha } else { style.back_alpha };
-        if alpha <= 0.0 {
-            return;
-        }
-        let paint = solid(style.color, alpha);
-        let width = style.width * self.scale * if front { 1.0 } else { 0.8 };
-        let dash = (!front && style.back_dashed)
-            .then(|| StrokeDash::new(vec![5.0 * self.scale, 4.0 * self.scale], 0.0))
-            .flatten();
-        let stroke = Stroke {
-            width,
-            line_cap: if dash.is_some() {
-                LineCap::Butt
-            } else {
-                LineCap::Round
-            },
-            line_join: LineJoin::Bevel,
-            dash,
-            ..Stroke::default()
-        };
-        pixmap.stroke_path(&path, &paint, &stroke, Transform::identity(), None);
     }
 }
 
@@ -257,85 +204,113 @@ const SPHERE_LIMB: Rgb = [0xcd, 0xd5, 0xdf];
 /// Where the limb shading starts, as a fraction of the radius.
 const LIMB_START: f32 = 0.93;
 
-fn rgb(c: Rgb) -> Color {
-    Color::from_rgba8(c[0], c[1], c[2], 0xff)
+/// Paints the sphere's disc centred at `(cx, cy)` with radius `r`: a flat light fill that
+/// darkens linearly to the limb over the outer ring, with an anti-aliased edge. Flat inside,
+/// so it compresses well in PNG (a gradient over the whole disc costs ~40 KiB per 512 px
+/// image) and most rows are a run of one colour.
+fn shade_disc(pixmap: &mut Pixmap, cx: f32, cy: f32, r: f32) {
+    let (width, height) = (pixmap.width() as usize, pixmap.height() as usize);
+    let data = pixmap.data_mut();
+    let reach = r + 0.5;
+    let inner = LIMB_START * r;
+    let fill = [SPHERE_FILL[0], SPHERE_FILL[1], SPHERE_FILL[2], 0xff];
+    for y in 0..height {
+        #[expect(clippy::cast_precision_loss, reason = "small row numbers")]
+        let py = y as f32 + 0.5 - cy;
+        if py.abs() >= reach {
+            continue;
+        }
+        let half = (reach * reach - py * py).sqrt();
+        // The flat part of the row: pixels whose centres are inside the inner circle.
+        let flat = if py.abs() < inner {
+            (inner * inner - py * py).sqrt()
+        } else {
+            0.0
+        };
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            clippy::cast_precision_loss,
+            reason = "clamped to the pixmap"
+        )]
+        let column = |x: f32| x.max(0.0).min(width as f32) as usize;
+        let (left, right) = (column((cx - half).floor()), column((cx + half).ceil()));
+        let (flat_left, flat_right) = (column((cx - flat).ceil()), column((cx + flat).floor()));
+        let row = &mut data[4 * y * width..4 * (y + 1) * width];
+        for x in left..right {
+            let px = &mut row[4 * x..4 * x + 4];
+            if flat_left <= x && x < flat_right {
+                px.copy_from_slice(&fill);
+                continue;
+            }
+            #[expect(clippy::cast_precision_loss, reason = "small column numbers")]
+            let dx = x as f32 + 0.5 - cx;
+            let d = length(dx, py);
+            let s = ((d - inner) / (r - inner)).clamp(0.0, 1.0);
+            let color: Rgb = core::array::from_fn(|k| {
+                let (a, b) = (f32::from(SPHERE_FILL[k]), f32::from(SPHERE_LIMB[k]));
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    reason = "between two bytes"
+                )]
+                let c = (a + (b - a) * s + 0.5) as u8;
+                c
+            });
+            blend(px, color, (reach - d).clamp(0.0, 1.0));
+        }
+    }
 }
 
-/// A solid paint of `color` at opacity `alpha`.
-pub(crate) fn solid(color: Rgb, alpha: f32) -> Paint<'static> {
-    let mut paint = Paint::default();
-    paint.set_color(
-        Color::from_rgba(
-            f32::from(color[0]) / 255.0,
-            f32::from(color[1]) / 255.0,
-            f32::from(color[2]) / 255.0,
-            alpha,
-        )
-        .unwrap_or(Color::BLACK),
-    );
-    paint.anti_alias = true;
-    paint
-}
-
-fn draw_marker(pixmap: &mut Pixmap, p: Point, shape: Shape, color: Rgb, size: f32, front: bool) {
+/// Draws a marker of `size` pixels centred at `p`: discs and squares are single thick segments
+/// (round and butt ended), outlines closed polylines.
+fn draw_marker(
+    pixmap: &mut Pixmap,
+    strokes: &mut Strokes,
+    p: Point,
+    shape: Shape,
+    color: Rgb,
+    size: f32,
+    front: bool,
+) {
     let alpha = if front { 1.0 } else { 0.35 };
     let h = 0.5 * size;
-    let path = match shape {
-        Shape::Dot => PathBuilder::from_circle(p.x, p.y, h),
-        Shape::Square => {
-            let mut pb = PathBuilder::new();
-            pb.move_to(p.x - h, p.y - h);
-            pb.line_to(p.x + h, p.y - h);
-            pb.line_to(p.x + h, p.y + h);
-            pb.line_to(p.x - h, p.y + h);
-            pb.close();
-            pb.finish()
-        }
-        Shape::Diamond => {
-            let k = 1.3 * h;
-            let mut pb = PathBuilder::new();
-            pb.move_to(p.x, p.y - k);
-            pb.line_to(p.x + k, p.y);
-            pb.line_to(p.x, p.y + k);
-            pb.line_to(p.x - k, p.y);
-            pb.close();
-            pb.finish()
-        }
-    };
-    let Some(path) = path else { return };
-    let rim = Stroke {
-        width: (0.3 * size).max(1.0),
-        ..Stroke::default()
-    };
+    let rim = (0.3 * size).max(1.0);
+    let at = |x: f32, y: f32| Point::from_xy(p.x + x, p.y + y);
     if shape == Shape::Dot {
-        pixmap.fill_path(
-            &path,
-            &solid(color, alpha),
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
-        pixmap.stroke_path(
-            &path,
-            &solid([0xff; 3], alpha),
-            &rim,
-            Transform::identity(),
-            None,
-        );
-    } else {
-        pixmap.fill_path(
-            &path,
-            &solid([0xff; 3], 0.8 * alpha),
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
-        pixmap.stroke_path(
-            &path,
-            &solid(color, alpha),
-            &rim,
-            Transform::identity(),
-            None,
-        );
+        // A white disc under the coloured one: a dot with a white rim.
+        strokes.polyline(&[p, p], Pen::round(2.0 * h + rim));
+        strokes.paint(pixmap, [0xff; 3], alpha);
+        strokes.polyline(&[p, p], Pen::round(2.0 * h - rim));
+        strokes.paint(pixmap, color, alpha);
+        return;
     }
+    // A square (or a square turned by 45°: the diamond) is a butt-ended segment as wide as
+    // it is long, through its centre.
+    let (corners, fill) = if shape == Shape::Square {
+        (
+            [at(-h, -h), at(h, -h), at(h, h), at(-h, h)],
+            [at(-h, 0.0), at(h, 0.0)],
+        )
+    } else {
+        let k = 1.3 * h;
+        (
+            [at(0.0, -k), at(k, 0.0), at(0.0, k), at(-k, 0.0)],
+            [at(-0.5 * k, -0.5 * k), at(0.5 * k, 0.5 * k)],
+        )
+    };
+    let side = length(fill[1].x - fill[0].x, fill[1].y - fill[0].y);
+    strokes.polyline(
+        &fill,
+        Pen {
+            width: side,
+            cap: Cap::Butt,
+            dash: None,
+        },
+    );
+    strokes.paint(pixmap, [0xff; 3], 0.8 * alpha);
+    let mut outline = corners.to_vec();
+    outline.push(corners[0]);
+    strokes.polyline(&outline, Pen::round(rim));
+    strokes.paint(pixmap, color, alpha);
 }

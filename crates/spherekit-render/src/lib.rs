@@ -7,8 +7,10 @@
 //!
 //! The native `spherekit render` command, the golden-image tests and the browser playground
 //! all call [`render`], so they draw the same pixels: all math runs in f64 through `libm`
-//! until projection, and tiny-skia rasterises identically on native and wasm targets. There is
-//! no text in the images (fonts would make pixels depend on the platform).
+//! until projection, and the rasterizer (a distance-based stroker of our own, drawing into the
+//! pixmap's premultiplied RGBA) uses only f32 arithmetic and `sqrt`, which are identical on
+//! native and wasm targets. There is no text in the images (fonts would make pixels depend on
+//! the platform).
 //!
 //! # Example
 //!
@@ -24,6 +26,7 @@
 mod canvas;
 mod flatten;
 mod plot;
+mod stroke;
 mod view;
 
 use core::fmt;
@@ -141,7 +144,7 @@ pub fn render_built(
         0
     };
     let axes = view.axes();
-    let mut pixmap = backdrop(size, size + strip, axes).ok_or(RenderError::Size(size))?;
+    let mut pixmap = backdrop(size, strip, axes).ok_or(RenderError::Size(size))?;
     let mut canvas = Canvas::new(size, axes);
     let single = curves.len() == 1;
     let mut series = Vec::new();
@@ -168,17 +171,12 @@ pub fn render_built(
         };
         series.push(s);
     }
-    canvas.draw(&mut pixmap);
-    if strip > 0 {
-        let s = f64::from(size);
-        #[expect(clippy::cast_possible_truncation, reason = "pixels")]
-        let (x, w) = ((0.04 * s) as f32, (0.92 * s) as f32);
-        #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
-        let (y, h) = (size as f32 - 0.02 * size as f32, strip as f32 * 0.92);
-        if let Some(area) = Rect::from_xywh(x, y, w, h) {
-            plot::draw(&mut pixmap, area, canvas.scale, &series);
+    stroke::Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+        canvas.draw(&mut pixmap, strokes);
+        if let Some(area) = plot_area(size, strip) {
+            plot::draw(&mut pixmap, strokes, area, canvas.scale, &series);
         }
-    }
+    });
     Ok(pixmap)
 }
 
@@ -234,27 +232,43 @@ fn interpolates(method: Method) -> bool {
     )
 }
 
-/// The white page with the shaded sphere and its graticule for one size and camera: the part
-/// of a frame that does not depend on the curves. The last one drawn is kept (per thread), so
+/// Where the plot strip goes in a frame of `size` with a strip `strip` pixels high, if any.
+fn plot_area(size: u32, strip: u32) -> Option<Rect> {
+    if strip == 0 {
+        return None;
+    }
+    let s = f64::from(size);
+    #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+    let (x, w) = ((0.04 * s) as f32, (0.92 * s) as f32);
+    #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
+    let (y, h) = (size as f32 - 0.02 * size as f32, strip as f32 * 0.92);
+    Rect::from_xywh(x, y, w, h)
+}
+
+/// The white page with the shaded sphere, its graticule and the plot strip's frame for one
+/// size and camera: the part of a frame that does not depend on the curves. The last one drawn is kept (per thread), so
 /// that redrawing after an edit that leaves the camera alone, such as dragging a point in the
 /// playground, starts from a copy. A copy and a fresh drawing are the same pixels.
-fn backdrop(size: u32, height: u32, axes: [DVec3; 3]) -> Option<Pixmap> {
+fn backdrop(size: u32, strip: u32, axes: [DVec3; 3]) -> Option<Pixmap> {
     type Key = (u32, u32, [DVec3; 3]);
     thread_local! {
         static LAST: RefCell<Option<(Key, Pixmap)>> = const { RefCell::new(None) };
     }
-    let key = (size, height, axes);
+    let key = (size, strip, axes);
     LAST.with_borrow_mut(|last| {
         if let Some((k, pixmap)) = last.as_ref()
             && *k == key
         {
             return Some(pixmap.clone());
         }
-        let mut pixmap = Pixmap::new(size, height)?;
+        let mut pixmap = Pixmap::new(size, size + strip)?;
         pixmap.fill(Color::WHITE);
         let mut canvas = Canvas::new(size, axes);
         graticule(&mut canvas);
         canvas.draw_backdrop(&mut pixmap);
+        if let Some(area) = plot_area(size, strip) {
+            plot::draw_frame(&mut pixmap, area, canvas.scale);
+        }
         *last = Some((key, pixmap.clone()));
         Some(pixmap)
     })

@@ -3,9 +3,13 @@
 
 //! The plot strip: speed (or angular speed) against the parameter, joints marked.
 
-use tiny_skia::{PathBuilder, Pixmap, Rect, Stroke, Transform};
+use tiny_skia::{Pixmap, Point, Rect};
 
-use crate::canvas::{Rgb, solid};
+use crate::canvas::Rgb;
+use crate::stroke::{Cap, Pen, Strokes, blend};
+
+/// The grey of the frame and the axes.
+const GREY: Rgb = [0xc3, 0xc9, 0xd1];
 
 /// One curve's speed samples, one polyline per piece (so jumps at joints stay visible).
 pub(crate) struct SpeedSeries {
@@ -14,11 +18,60 @@ pub(crate) struct SpeedSeries {
     pub(crate) joints: Vec<f64>,
 }
 
-/// Draws the strip into `area` (pixels). Each curve's parameter is mapped to the strip's full
+/// Draws the strip's frame into `area` (pixels): a light fill and a thin border. It does not
+/// depend on the curves, so it belongs to the backdrop.
+pub(crate) fn draw_frame(pixmap: &mut Pixmap, area: Rect, scale: f32) {
+    fill_rect(pixmap, area, [0xf6, 0xf7, 0xf9]);
+    let (l, t, r, b) = (area.left(), area.top(), area.right(), area.bottom());
+    let border = [(l, t), (r, t), (r, b), (l, b), (l, t)].map(|(x, y)| Point::from_xy(x, y));
+    Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+        strokes.polyline(&border, Pen::round(0.8 * scale));
+        strokes.paint(pixmap, GREY, 1.0);
+    });
+}
+
+/// Fills `rect` with `color`, edge pixels by the fraction of them inside.
+fn fill_rect(pixmap: &mut Pixmap, rect: Rect, color: Rgb) {
+    let width = pixmap.width() as usize;
+    #[expect(clippy::cast_precision_loss, reason = "pixmap sizes")]
+    let (w, h) = (width as f32, pixmap.height() as f32);
+    let data = pixmap.data_mut();
+    // The part of the pixel interval [i, i + 1] inside [lo, hi].
+    let inside = |i: usize, lo: f32, hi: f32| {
+        #[expect(clippy::cast_precision_loss, reason = "small pixel numbers")]
+        let i = i as f32;
+        (hi.min(i + 1.0) - lo.max(i)).clamp(0.0, 1.0)
+    };
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "clamped to the pixmap"
+    )]
+    let span = |lo: f32, hi: f32, end: f32| {
+        (lo.floor().clamp(0.0, end) as usize)..(hi.ceil().clamp(0.0, end) as usize)
+    };
+    for y in span(rect.top(), rect.bottom(), h) {
+        let cy = inside(y, rect.top(), rect.bottom());
+        for x in span(rect.left(), rect.right(), w) {
+            let i = 4 * (y * width + x);
+            blend(
+                &mut data[i..i + 4],
+                color,
+                cy * inside(x, rect.left(), rect.right()),
+            );
+        }
+    }
+}
+
+/// Draws the curves' speeds into the strip's `area` (pixels). Each curve's parameter is mapped to the strip's full
 /// width, so curves with different domains can be compared.
-pub(crate) fn draw(pixmap: &mut Pixmap, area: Rect, scale: f32, series: &[SpeedSeries]) {
-    let frame = solid([0xf6, 0xf7, 0xf9], 1.0);
-    pixmap.fill_rect(area, &frame, Transform::identity(), None);
+pub(crate) fn draw(
+    pixmap: &mut Pixmap,
+    strokes: &mut Strokes,
+    area: Rect,
+    scale: f32,
+    series: &[SpeedSeries],
+) {
     let (mut t0, mut t1, mut vmax) = (f64::INFINITY, f64::NEG_INFINITY, 0.0_f64);
     for s in series {
         for piece in &s.pieces {
@@ -44,57 +97,35 @@ pub(crate) fn draw(pixmap: &mut Pixmap, area: Rect, scale: f32, series: &[SpeedS
         let y = f64::from(y0) + v / (1.08 * vmax) * f64::from(y1 - y0);
         (x as f32, y as f32)
     };
-    let thin = Stroke {
+    let thin = Pen {
         width: 0.8 * scale,
-        ..Stroke::default()
+        cap: Cap::Butt,
+        dash: None,
     };
     // Axes: the zero line, and a tick line at every joint of every curve.
-    let mut grid = PathBuilder::new();
-    grid.move_to(x0, y0);
-    grid.line_to(x1, y0);
+    strokes.polyline(&[Point::from_xy(x0, y0), Point::from_xy(x1, y0)], thin);
     for s in series {
         for &j in &s.joints {
             let (x, _) = map(j, 0.0);
-            grid.move_to(x, y0);
-            grid.line_to(x, y1);
+            strokes.polyline(&[Point::from_xy(x, y0), Point::from_xy(x, y1)], thin);
         }
     }
-    if let Some(p) = grid.finish() {
-        pixmap.stroke_path(
-            &p,
-            &solid([0xc3, 0xc9, 0xd1], 1.0),
-            &thin,
-            Transform::identity(),
-            None,
-        );
-    }
-    let line = Stroke {
+    strokes.paint(pixmap, GREY, 1.0);
+    let line = Pen {
         width: 1.6 * scale,
-        line_join: tiny_skia::LineJoin::Round,
-        ..Stroke::default()
+        cap: Cap::Butt,
+        dash: None,
     };
+    let mut pts = Vec::new();
     for s in series {
-        let mut pb = PathBuilder::new();
         for piece in &s.pieces {
-            for (i, &(t, v)) in piece.iter().enumerate() {
+            pts.clear();
+            pts.extend(piece.iter().map(|&(t, v)| {
                 let (x, y) = map(t, v);
-                if i == 0 {
-                    pb.move_to(x, y)
-                } else {
-                    pb.line_to(x, y)
-                }
-            }
+                Point::from_xy(x, y)
+            }));
+            strokes.polyline(&pts, line);
         }
-        if let Some(p) = pb.finish() {
-            pixmap.stroke_path(&p, &solid(s.color, 1.0), &line, Transform::identity(), None);
-        }
+        strokes.paint(pixmap, s.color, 1.0);
     }
-    let border = PathBuilder::from_rect(area);
-    pixmap.stroke_path(
-        &border,
-        &solid([0xc3, 0xc9, 0xd1], 1.0),
-        &thin,
-        Transform::identity(),
-        None,
-    );
 }
