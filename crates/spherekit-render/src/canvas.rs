@@ -237,12 +237,17 @@ fn shade_disc(pixmap: &mut Pixmap, cx: f32, cy: f32, r: f32) {
         let (left, right) = (column((cx - half).floor()), column((cx + half).ceil()));
         let (flat_left, flat_right) = (column((cx - flat).ceil()), column((cx + flat).floor()));
         let row = &mut data[4 * y * width..4 * (y + 1) * width];
-        for x in left..right {
+        // (The flat part lies inside [left, right); an empty one sits at `left`.)
+        let (flat_left, flat_right) = if flat_left < flat_right {
+            (flat_left, flat_right)
+        } else {
+            (left, left)
+        };
+        for px in row[4 * flat_left..4 * flat_right].chunks_exact_mut(4) {
+            px.copy_from_slice(&fill);
+        }
+        for x in (left..flat_left).chain(flat_right..right) {
             let px = &mut row[4 * x..4 * x + 4];
-            if flat_left <= x && x < flat_right {
-                px.copy_from_slice(&fill);
-                continue;
-            }
             #[expect(clippy::cast_precision_loss, reason = "small column numbers")]
             let dx = x as f32 + 0.5 - cx;
             let d = length(dx, py);

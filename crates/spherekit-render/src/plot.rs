@@ -50,15 +50,16 @@ fn fill_rect(pixmap: &mut Pixmap, rect: Rect, color: Rgb) {
     let span = |lo: f32, hi: f32, end: f32| {
         (lo.floor().clamp(0.0, end) as usize)..(hi.ceil().clamp(0.0, end) as usize)
     };
+    let opaque = [color[0], color[1], color[2], 0xff];
     for y in span(rect.top(), rect.bottom(), h) {
         let cy = inside(y, rect.top(), rect.bottom());
         for x in span(rect.left(), rect.right(), w) {
-            let i = 4 * (y * width + x);
-            blend(
-                &mut data[i..i + 4],
-                color,
-                cy * inside(x, rect.left(), rect.right()),
-            );
+            let px = &mut data[4 * (y * width + x)..4 * (y * width + x + 1)];
+            // Inside pixels are the colour itself (what `blend` gives at full opacity).
+            match cy * inside(x, rect.left(), rect.right()) {
+                1.0 => px.copy_from_slice(&opaque),
+                a => blend(px, color, a),
+            }
         }
     }
 }

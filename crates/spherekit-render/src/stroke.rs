@@ -233,12 +233,15 @@ impl Strokes {
             reason = "clamped to the pixmap"
         )]
         let (top, bottom) = (top as usize, bottom as usize);
+        // Reciprocals, not divisions per row (a pixel the rounding might leave out of a row's
+        // range is one whose coverage rounds to zero anyway).
+        let (inv_dy, inv_uy) = (dy.recip(), uy.recip());
         for y in top..bottom {
             #[expect(clippy::cast_precision_loss, reason = "small row numbers")]
             let yc = y as f32 + 0.5;
             // The segment's points within `reach` vertically of this row, widened by `reach`.
             let (t0, t1) = if dy.abs() > 1e-6 {
-                let (s0, s1) = ((yc - reach - a.y) / dy, (yc + reach - a.y) / dy);
+                let (s0, s1) = ((yc - reach - a.y) * inv_dy, (yc + reach - a.y) * inv_dy);
                 (s0.min(s1).max(0.0), s0.max(s1).min(1.0))
             } else {
                 (0.0, 1.0)
@@ -251,7 +254,7 @@ impl Strokes {
             // The capsule also lies in the band within `reach` of the segment's line.
             let py = yc - a.y;
             if uy.abs() > 1e-3 {
-                let (b0, b1) = ((py * ux - reach) / uy, (py * ux + reach) / uy);
+                let (b0, b1) = ((py * ux - reach) * inv_uy, (py * ux + reach) * inv_uy);
                 x0 = x0.max(a.x + b0.min(b1));
                 x1 = x1.min(a.x + b0.max(b1));
             }
@@ -267,9 +270,12 @@ impl Strokes {
                 reason = "clamped to the pixmap"
             )]
             let (left, right) = (left as usize, right as usize);
-            // Whole blocks of `LANES` pixels (rows are padded to a multiple of it), so the
-            // loop vectorises without a scalar tail.
-            let (left, right) = (left / LANES * LANES, right.div_ceil(LANES) * LANES);
+            // Whole blocks of `LANES` pixels, so the loop vectorises without a scalar tail: the
+            // last block runs past `right` (rows are padded to a multiple of `LANES`), or the
+            // first starts before `left` near the row's end.
+            let n = (right - left).div_ceil(LANES) * LANES;
+            let left = left.min(self.stride - n);
+            let right = left + n;
             let row = &mut self.coverage[y * self.stride + left..y * self.stride + right];
             #[expect(
                 clippy::cast_possible_truncation,
@@ -303,11 +309,12 @@ impl Strokes {
             "a buffer of the pixmap's size"
         );
         // Coverage is rounded to sixteenths (see `LEVELS`): one opacity per level.
-        let opacity: [i32; LEVELS + 1] = core::array::from_fn(|k| {
+        let opacity: [u32; LEVELS + 1] = core::array::from_fn(|k| {
             #[expect(clippy::cast_precision_loss, reason = "0 to 16")]
             let c = k as f32 / LEVELS as f32;
-            byte(c * alpha)
+            opacity256(c * alpha)
         });
+        let src = Packed::new(color);
         let data = pixmap.data_mut();
         // A pixel in several runs is blended at its first visit, which clears it.
         for (y, [left, right]) in self.runs.drain(..) {
@@ -331,7 +338,7 @@ impl Strokes {
                     reason = "0 to LEVELS"
                 )]
                 let level = (core::mem::take(c) * LEVELS as f32 + 0.5) as usize;
-                blend_byte(px, color, opacity[level.min(LEVELS)]);
+                blend_packed(px, src, opacity[level.min(LEVELS)]);
             }
             // The padding past the pixmap's edge.
             self.coverage[row + visible.end..row + right].fill(0.0);
@@ -357,33 +364,48 @@ fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
     if x > hi { hi } else { x }
 }
 
-/// Blends `color` at opacity `a` (0 to 1) over a premultiplied RGBA pixel, source-over:
-/// `d + (s − d)·a` per channel (with `s = 255` for alpha), in integers rounded to nearest.
+/// Blends `color` at opacity `a` (0 to 1) over a premultiplied RGBA pixel, source-over: per
+/// channel `s·a + d·(1 − a)` (with `s = 255` for alpha), `a` in 256ths, rounded to nearest.
 pub(crate) fn blend(px: &mut [u8], color: Rgb, a: f32) {
-    blend_byte(px, color, byte(a));
+    blend_packed(px, Packed::new(color), opacity256(a));
 }
 
-/// An opacity from 0 to 1 as a byte, rounded to nearest.
-fn byte(a: f32) -> i32 {
-    #[expect(clippy::cast_possible_truncation, reason = "in 0..=255")]
-    let a = (a.clamp(0.0, 1.0) * 255.0 + 0.5) as i32;
+/// An opacity from 0 to 1 in 256ths, rounded to nearest.
+fn opacity256(a: f32) -> u32 {
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "in 0..=256"
+    )]
+    let a = (a.clamp(0.0, 1.0) * 256.0 + 0.5) as u32;
     a
 }
 
-/// [`blend`] with the opacity as a byte `a` (0 to 255).
-fn blend_byte(px: &mut [u8], color: Rgb, a: i32) {
-    for (d, s) in px.iter_mut().zip([color[0], color[1], color[2], 0xff]) {
-        let (s, old) = (i32::from(s), i32::from(*d));
-        // (s − d)·a / 255 as (x·257 + 2¹⁵) >> 16, exact for a = 0 and a = 255.
-        let step = ((s - old) * a * 257 + 32768) >> 16;
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "between d and s"
-        )]
-        let new = (old + step) as u8;
-        *d = new;
+/// An opaque colour with its red and blue, and its green and alpha, in the low bytes of the
+/// two 16-bit halves of a word each: two channels per multiplication.
+#[derive(Clone, Copy)]
+struct Packed {
+    rb: u32,
+    ga: u32,
+}
+
+impl Packed {
+    fn new(c: Rgb) -> Self {
+        Self {
+            rb: u32::from(c[0]) | u32::from(c[2]) << 16,
+            ga: u32::from(c[1]) | 0xff << 16,
+        }
     }
+}
+
+/// [`blend`] with the opacity in 256ths (0 to 256). Each half-word holds at most
+/// `255·256 + 128 < 2¹⁶`, so channels never carry into each other; 256 gives the colour exactly
+/// and 0 leaves the pixel.
+fn blend_packed(px: &mut [u8], src: Packed, a: u32) {
+    let d = u32::from_le_bytes([px[0], px[1], px[2], px[3]]);
+    let (rb, ga) = (d & 0x00ff_00ff, (d >> 8) & 0x00ff_00ff);
+    let mix = |s: u32, d: u32| ((s * a + d * (256 - a) + 0x0080_0080) >> 8) & 0x00ff_00ff;
+    px.copy_from_slice(&(mix(src.rb, rb) | mix(src.ga, ga) << 8).to_le_bytes());
 }
 
 /// Splits a polyline into dashes as it is walked segment by segment.
@@ -594,6 +616,26 @@ mod tests {
     }
 
     #[test]
+    fn packed_blending_rounds_every_channel_to_nearest() {
+        // Two channels share a multiplication; none may carry into its neighbour.
+        for a in 0..=256_u32 {
+            for s in (0..=255_u8).step_by(5) {
+                for d in (0..=255_u8).step_by(3) {
+                    let mut px = [d, 255 - d, d / 2, d];
+                    blend_packed(&mut px, Packed::new([s, 255 - s, s / 3]), a);
+                    let want = |s: u8, d: u8| {
+                        let x = u32::from(s) * a + u32::from(d) * (256 - a);
+                        u8::try_from((x + 128) / 256).expect("a byte")
+                    };
+                    let expected = [want(s, d), want(255 - s, 255 - d), want(s / 3, d / 2)];
+                    assert_eq!(&px[..3], &expected, "s {s} d {d} a {a}");
+                    assert_eq!(px[3], want(255, d), "alpha, s {s} d {d} a {a}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn lines_off_the_edge_leave_the_buffer_clean() {
         // Width 10 is padded to 12 columns; a line running off the right edge touches the
         // padding, which painting must clear too.
@@ -636,9 +678,9 @@ mod tests {
             pen(2.0),
         );
         s.paint(&mut pixmap, [0, 0, 0], 0.5);
-        // Rows 3 and 4 are fully covered: white at half black (255 − 255·128/255 rounded).
+        // Rows 3 and 4 are fully covered: white at half black (255·128/256 rounded).
         let px = pixmap.pixel(3, 3).expect("pixel");
-        assert_eq!((px.red(), px.alpha()), (127, 255));
+        assert_eq!((px.red(), px.alpha()), (128, 255));
         assert_eq!(pixmap.pixel(3, 1).expect("pixel").red(), 255);
         assert!(s.coverage.iter().all(|&c| c == 0.0));
     }

@@ -40,8 +40,8 @@ impl fmt::Display for InputError {
             Self::Json(m) => write!(f, "invalid JSON: {m}"),
             Self::Field(name) => write!(
                 f,
-                "field \"{name}\" is not a sample field (t, points, velocity, acceleration, \
-                 angular_velocity, angular_acceleration, controls, auxiliary, domain)"
+                "field \"{name}\" is not a sample field ({})",
+                spherekit::scene::SAMPLE_FIELDS.join(", ")
             ),
             Self::NoContext => write!(f, "canvas: no 2D context"),
         }
@@ -75,39 +75,6 @@ pub(crate) fn quat(c: &[f64]) -> Result<UnitQuat, InputError> {
             c.len()
         ))),
     }
-}
-
-/// One field of a curve's sample output, flattened row by row.
-pub(crate) fn flatten_field(one: &Value, field: &str) -> Result<Vec<f64>, InputError> {
-    const FIELDS: [&str; 9] = [
-        "t",
-        "points",
-        "velocity",
-        "acceleration",
-        "angular_velocity",
-        "angular_acceleration",
-        "controls",
-        "auxiliary",
-        "domain",
-    ];
-    if !FIELDS.contains(&field) {
-        return Err(InputError::Field(field.into()));
-    }
-    let mut out = Vec::new();
-    let mut push = |v: &Value| {
-        if let Some(x) = v.as_f64() {
-            out.push(x);
-        }
-    };
-    if let Some(Value::Array(rows)) = one.get(field) {
-        for row in rows {
-            match row {
-                Value::Array(xs) => xs.iter().for_each(&mut push),
-                v => push(v),
-            }
-        }
-    }
-    Ok(out)
 }
 
 /// A point inserted before, or removed at, an index of a curve's `points`.

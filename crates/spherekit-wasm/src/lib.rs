@@ -154,14 +154,21 @@ pub fn sample(scene: &str, deriv: bool) -> Result<String, JsError> {
 #[wasm_bindgen]
 pub fn sample_array(scene: &str, curve: usize, field: &str) -> Result<Vec<f64>, JsError> {
     let (scene, curves) = load(scene).map_err(js)?;
-    let deriv = !matches!(field, "t" | "points" | "controls" | "auxiliary" | "domain");
-    let out = scene.sample_json(&curves, deriv);
-    let one = match out.get("curves") {
-        Some(list) => list.get(curve),
-        None => (curve == 0).then_some(&out),
-    }
-    .ok_or(InputError::NoCurve(curve))?;
-    input::flatten_field(one, field).map_err(Into::into)
+    field_of(&scene, &curves, curve, field).map_err(Into::into)
+}
+
+/// Curve `curve`'s samples of `field`, as [`sample_array`] gives them.
+fn field_of(
+    scene: &Scene,
+    curves: &[BuiltCurve],
+    curve: usize,
+    field: &str,
+) -> Result<Vec<f64>, InputError> {
+    curves
+        .get(curve)
+        .ok_or(InputError::NoCurve(curve))?
+        .sample_field(scene, field)
+        .ok_or_else(|| InputError::Field(field.into()))
 }
 
 /// The continuity report of every curve as JSON: per curve a list of interior joints
@@ -698,6 +705,15 @@ impl Playground {
     #[must_use]
     pub fn sample(&self, deriv: bool) -> String {
         self.scene.sample_json(&self.curves, deriv).to_string()
+    }
+
+    /// One field of curve `curve`'s samples, as [`sample_array`], from the curves already built.
+    ///
+    /// # Errors
+    ///
+    /// An [`InputError`] for an unknown field or curve.
+    pub fn sample_array(&self, curve: usize, field: &str) -> Result<Vec<f64>, JsError> {
+        field_of(&self.scene, &self.curves, curve, field).map_err(Into::into)
     }
 
     /// The continuity report, as [`continuity`].

@@ -56,6 +56,27 @@ fn sample_matches_the_cli_output() {
 }
 
 #[wasm_bindgen_test]
+fn the_playground_samples_its_built_curves_like_the_free_function() {
+    let pg = Playground::new(S3).unwrap();
+    for field in ["t", "points", "angular_velocity", "controls", "domain"] {
+        assert_eq!(
+            pg.sample_array(0, field).unwrap(),
+            sample_array(S3, 0, field).unwrap(),
+            "{field}"
+        );
+    }
+    assert!(
+        message(pg.sample_array(0, "speed").unwrap_err())
+            .starts_with("field \"speed\" is not a sample field (t, points,"),
+        "unknown field"
+    );
+    assert!(
+        message(pg.sample_array(1, "t").unwrap_err()).contains("curves[1]"),
+        "curve index"
+    );
+}
+
+#[wasm_bindgen_test]
 fn bad_input_gives_the_cli_message() {
     let bad = r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,0,0]]}"#;
     assert_eq!(

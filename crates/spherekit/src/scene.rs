@@ -931,6 +931,82 @@ pub enum BuiltCurve {
     Sn(Built<SnPoint>),
 }
 
+/// The fields [`BuiltCurve::sample_field`] gives, as [`Scene::sample_json`] names them.
+pub const SAMPLE_FIELDS: [&str; 9] = [
+    "t",
+    "points",
+    "velocity",
+    "acceleration",
+    "angular_velocity",
+    "angular_acceleration",
+    "controls",
+    "auxiliary",
+    "domain",
+];
+
+impl BuiltCurve {
+    /// One field of [`Scene::sample_json`] for this curve, its rows one after another, without
+    /// building JSON: `t`, `points`, `velocity`, `acceleration`, `angular_velocity` and
+    /// `angular_acceleration` (S³; empty elsewhere), `controls`, `auxiliary` (empty when the
+    /// method has none) or `domain`. `None` for any other name (see [`SAMPLE_FIELDS`]).
+    ///
+    /// ```
+    /// use spherekit::scene::Scene;
+    ///
+    /// let scene = Scene::from_json(r#"{"space":"S2","method":"geodesic","samples":3,
+    ///     "points":[[1,0,0],[0,1,0]]}"#).unwrap();
+    /// let curves = scene.build().unwrap();
+    /// let points = curves[0].sample_field(&scene, "points").unwrap();
+    /// assert_eq!(points.len(), 3 * 3);
+    /// assert!((points[3] - 0.5_f64.sqrt()).abs() < 1e-15); // the middle sample, x
+    /// assert!(curves[0].sample_field(&scene, "speed").is_none());
+    /// ```
+    #[must_use]
+    pub fn sample_field(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
+        match self {
+            Self::S2(b) => b.sample_field(scene, field),
+            Self::S3(b) => b.sample_field(scene, field),
+            Self::Sn(b) => b.sample_field(scene, field),
+        }
+    }
+}
+
+impl<P: ScenePoint> Built<P> {
+    fn sample_field(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
+        let domain = self.curve.domain();
+        let flat = |ps: &[P]| ps.iter().flat_map(ScenePoint::coords).collect();
+        Some(match field {
+            "domain" => domain.to_vec(),
+            "t" => scene.parameters(domain),
+            "controls" => flat(&self.controls),
+            "auxiliary" => flat(&self.auxiliary),
+            "points" => {
+                let ts = scene.parameters(domain);
+                let mut ps = vec![self.curve.eval(domain[0]); ts.len()];
+                self.curve.eval_many(&ts, &mut ps);
+                flat(&ps)
+            }
+            "velocity" | "acceleration" | "angular_velocity" | "angular_acceleration" => {
+                let ts = scene.parameters(domain);
+                let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
+                self.curve.jet_many(&ts, &mut jets);
+                let mut out = Vec::with_capacity(3 * jets.len());
+                for jet in &jets {
+                    match (field, P::angular(jet)) {
+                        ("velocity", _) => out.extend(P::vector_coords(&jet.velocity)),
+                        ("acceleration", _) => out.extend(P::vector_coords(&jet.acceleration)),
+                        ("angular_velocity", Some((w, _))) => out.extend(w),
+                        ("angular_acceleration", Some((_, a))) => out.extend(a),
+                        _ => {}
+                    }
+                }
+                out
+            }
+            _ => return None,
+        })
+    }
+}
+
 /// The conversions between a sphere's points and the scene's number lists.
 pub trait ScenePoint: Manifold + 'static {
     /// Builds a point from scene coordinates (normalising).
