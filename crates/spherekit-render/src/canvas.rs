@@ -7,7 +7,7 @@
 use spherekit::glam::DVec3;
 use tiny_skia::{Pixmap, Point};
 
-use crate::stroke::{Cap, Pen, Strokes, blend, length};
+use crate::stroke::{Cap, Pen, Strokes, blend, length, pixels};
 
 /// An opaque colour.
 pub(crate) type Rgb = [u8; 3];
@@ -234,10 +234,14 @@ fn shade_disc(pixmap: &mut Pixmap, cx: f32, cy: f32, r: f32) {
             reason = "clamped to the pixmap"
         )]
         let column = |x: f32| x.max(0.0).min(width as f32) as usize;
-        let (left, right) = (column((cx - half).floor()), column((cx + half).ceil()));
+        let (left, right) = {
+            let columns = pixels(cx - half, cx + half, width);
+            (columns.start, columns.end)
+        };
         let (flat_left, flat_right) = (column((cx - flat).ceil()), column((cx + flat).floor()));
         let row = &mut data[4 * y * width..4 * (y + 1) * width];
         // (The flat part lies inside [left, right); an empty one sits at `left`.)
+        let (flat_left, flat_right) = (flat_left.max(left), flat_right.min(right));
         let (flat_left, flat_right) = if flat_left < flat_right {
             (flat_left, flat_right)
         } else {

@@ -6,7 +6,7 @@
 use tiny_skia::{Pixmap, Point, Rect};
 
 use crate::canvas::Rgb;
-use crate::stroke::{Cap, Pen, Strokes, blend};
+use crate::stroke::{Cap, Pen, Strokes, blend, pixels};
 
 /// The grey of the frame and the axes.
 const GREY: Rgb = [0xc3, 0xc9, 0xd1];
@@ -32,9 +32,7 @@ pub(crate) fn draw_frame(pixmap: &mut Pixmap, area: Rect, scale: f32) {
 
 /// Fills `rect` with `color`, edge pixels by the fraction of them inside.
 fn fill_rect(pixmap: &mut Pixmap, rect: Rect, color: Rgb) {
-    let width = pixmap.width() as usize;
-    #[expect(clippy::cast_precision_loss, reason = "pixmap sizes")]
-    let (w, h) = (width as f32, pixmap.height() as f32);
+    let (width, height) = (pixmap.width() as usize, pixmap.height() as usize);
     let data = pixmap.data_mut();
     // The part of the pixel interval [i, i + 1] inside [lo, hi].
     let inside = |i: usize, lo: f32, hi: f32| {
@@ -42,18 +40,10 @@ fn fill_rect(pixmap: &mut Pixmap, rect: Rect, color: Rgb) {
         let i = i as f32;
         (hi.min(i + 1.0) - lo.max(i)).clamp(0.0, 1.0)
     };
-    #[expect(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "clamped to the pixmap"
-    )]
-    let span = |lo: f32, hi: f32, end: f32| {
-        (lo.floor().clamp(0.0, end) as usize)..(hi.ceil().clamp(0.0, end) as usize)
-    };
     let opaque = [color[0], color[1], color[2], 0xff];
-    for y in span(rect.top(), rect.bottom(), h) {
+    for y in pixels(rect.top(), rect.bottom(), height) {
         let cy = inside(y, rect.top(), rect.bottom());
-        for x in span(rect.left(), rect.right(), w) {
+        for x in pixels(rect.left(), rect.right(), width) {
             let px = &mut data[4 * (y * width + x)..4 * (y * width + x + 1)];
             // Inside pixels are the colour itself (what `blend` gives at full opacity).
             match cy * inside(x, rect.left(), rect.right()) {

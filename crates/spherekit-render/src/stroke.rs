@@ -221,22 +221,11 @@ impl Strokes {
             reach,
             fade,
         };
-        let top = (a.y.min(b.y) - reach).floor().max(0.0);
-        #[expect(clippy::cast_precision_loss, reason = "pixmap sizes are at most 4096")]
-        let bottom = (a.y.max(b.y) + reach).ceil().min(self.height as f32);
-        if top >= bottom {
-            return;
-        }
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "clamped to the pixmap"
-        )]
-        let (top, bottom) = (top as usize, bottom as usize);
+        let rows = pixels(a.y.min(b.y) - reach, a.y.max(b.y) + reach, self.height);
         // Reciprocals, not divisions per row (a pixel the rounding might leave out of a row's
         // range is one whose coverage rounds to zero anyway).
         let (inv_dy, inv_uy) = (dy.recip(), uy.recip());
-        for y in top..bottom {
+        for y in rows {
             #[expect(clippy::cast_precision_loss, reason = "small row numbers")]
             let yc = y as f32 + 0.5;
             // The segment's points within `reach` vertically of this row, widened by `reach`.
@@ -258,18 +247,11 @@ impl Strokes {
                 x0 = x0.max(a.x + b0.min(b1));
                 x1 = x1.min(a.x + b0.max(b1));
             }
-            let left = x0.floor().max(0.0);
-            #[expect(clippy::cast_precision_loss, reason = "pixmap sizes are at most 4096")]
-            let right = x1.ceil().min(self.width as f32);
-            if left >= right {
+            let columns = pixels(x0, x1, self.width);
+            if columns.is_empty() {
                 continue;
             }
-            #[expect(
-                clippy::cast_possible_truncation,
-                clippy::cast_sign_loss,
-                reason = "clamped to the pixmap"
-            )]
-            let (left, right) = (left as usize, right as usize);
+            let (left, right) = (columns.start, columns.end);
             // Whole blocks of `LANES` pixels, so the loop vectorises without a scalar tail: the
             // last block runs past `right` (rows are padded to a multiple of `LANES`), or the
             // first starts before `left` near the row's end.
@@ -350,6 +332,25 @@ impl Strokes {
 /// which keeps edges smooth and the PNGs small (every extra level is a new colour to
 /// compress).
 const LEVELS: usize = 16;
+
+/// The pixels (rows or columns, below `end`) that meet the interval `[lo, hi]`; empty when
+/// none do, or when a bound is NaN.
+pub(crate) fn pixels(lo: f32, hi: f32, end: usize) -> core::ops::Range<usize> {
+    #[expect(clippy::cast_precision_loss, reason = "pixmap sizes are at most 4096")]
+    let end = end as f32;
+    let (lo, hi) = (lo.floor().max(0.0), hi.ceil().min(end));
+    if lo < hi {
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "clamped to the pixmap"
+        )]
+        let range = lo as usize..hi as usize;
+        range
+    } else {
+        0..0
+    }
+}
 
 /// The length of `(x, y)`. Not `f32::hypot`, which calls the platform's C library and so may
 /// differ between native and wasm builds; `sqrt` is correctly rounded everywhere.

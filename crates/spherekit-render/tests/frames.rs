@@ -23,13 +23,45 @@ const S2_OTHER_CAMERA: &str = r#"{"space":"S2","method":"geodesic",
 
 #[test]
 fn frames_are_opaque() {
-    for text in [S2, S3, S2_OTHER_CAMERA] {
-        let pixmap = render(&scene(text), 200).expect("renders");
-        assert!(
-            pixmap.pixels().iter().all(|p| p.alpha() == u8::MAX),
-            "a pixel is not opaque in {text}"
-        );
+    // 16 and 17 px: the smallest size, and a width that is not a whole number of the
+    // stroker's vector blocks (its rows are padded past the pixmap's edge).
+    for size in [200, 16, 17] {
+        for text in [S2, S3, S2_OTHER_CAMERA] {
+            let pixmap = render(&scene(text), size).expect("renders");
+            assert!(
+                pixmap.pixels().iter().all(|p| p.alpha() == u8::MAX),
+                "a pixel is not opaque in {text} at {size} px"
+            );
+        }
     }
+}
+
+#[test]
+fn curves_change_the_pixels_they_cross_and_leave_the_rest() {
+    // The same sphere and camera with a point and with an arc from it: the frames differ, but
+    // only near the arc and its second marker.
+    let bare = r#"{"space":"S2","method":"geodesic","points":[[0,0,1],[0,0,1]],
+        "view":{"camera":{"yaw":0,"pitch":0}}}"#;
+    let arc = r#"{"space":"S2","method":"geodesic","points":[[0,0,1],[0.6,0,0.8]],
+        "view":{"camera":{"yaw":0,"pitch":0}}}"#;
+    let (a, b) = (
+        render(&scene(bare), 128).expect("renders"),
+        render(&scene(arc), 128).expect("renders"),
+    );
+    let changed = a
+        .pixels()
+        .iter()
+        .zip(b.pixels())
+        .filter(|(p, q)| p != q)
+        .count();
+    assert!(
+        changed > 20,
+        "the arc and its markers are drawn ({changed} pixels)"
+    );
+    assert!(
+        changed < 128 * 128 / 10,
+        "and little else changes ({changed} pixels)"
+    );
 }
 
 #[test]
