@@ -74,7 +74,7 @@ impl Canvas {
         let [r, u, z] = self.axes;
         let x = self.center.0 + self.radius * p.dot(r);
         let y = self.center.1 - self.radius * p.dot(u);
-        #[expect(clippy::cast_possible_truncation, reason = "tiny-skia works in f32")]
+        #[expect(clippy::cast_possible_truncation, reason = "pixel coordinates are f32")]
         let pt = Point::from_xy(x as f32, y as f32);
         (pt, p.dot(z))
     }

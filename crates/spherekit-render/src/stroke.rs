@@ -66,6 +66,9 @@ pub(crate) struct Strokes {
     /// Per row, the index in `runs` of its latest run ([`NONE`] if none), so that the runs of
     /// consecutive segments of a line merge instead of being blended over twice.
     latest: Vec<usize>,
+    /// The opacity factor of sub-pixel lines (their width), applied when painting so that
+    /// faint lines are not lost to the rounding of coverage. Strokes painted together share it.
+    fade: f32,
 }
 
 /// No run yet on a row.
@@ -87,7 +90,6 @@ struct Capsule {
     /// Butt ends: the positions along the line where coverage is cut (±∞ for round ends).
     cut: [f32; 2],
     reach: f32,
-    fade: f32,
 }
 
 impl Capsule {
@@ -119,7 +121,6 @@ impl Capsule {
                         * clamp(along - self.cut[0] + 0.5, 0.0, 1.0)
                         * clamp(self.cut[1] - along + 0.5, 0.0, 1.0);
                 }
-                let v = v * self.fade;
                 *c = if v > *c { v } else { *c };
             }
         }
@@ -138,6 +139,7 @@ impl Strokes {
             coverage: vec![0.0; stride * height],
             runs: Vec::new(),
             latest: vec![NONE; height],
+            fade: 1.0,
         }
     }
 
@@ -165,32 +167,31 @@ impl Strokes {
             return;
         }
         // Sub-pixel lines: one pixel wide at a fraction of the opacity.
-        let (half, fade) = if pen.width < 1.0 {
-            (0.5, pen.width)
-        } else {
-            (0.5 * pen.width, 1.0)
-        };
+        let half = 0.5 * pen.width.max(1.0);
+        self.fade = pen.width.min(1.0);
+        let butt = pen.cap == Cap::Butt;
+        let last = pts.len().saturating_sub(2);
         match pen.dash {
-            Some([on, off]) if on > 0.0 && off > 0.0 => {
+            // Patterns finer than a pixel are drawn solid.
+            Some([on, off]) if on > 0.0 && off > 0.0 && on + off >= 1.0 => {
                 let mut dashes = Dashes::new(on, off);
-                for w in pts.windows(2) {
-                    dashes.segment(w[0], w[1], |a, b, ends| {
-                        self.segment(a, b, half, fade, ends)
+                for (i, w) in pts.windows(2).enumerate() {
+                    let ends = [butt && i == 0, butt && i == last];
+                    dashes.segment(w[0], w[1], ends, |a, b, ends| {
+                        self.segment(a, b, half, ends);
                     });
                 }
             }
             _ => {
-                let last = pts.len().saturating_sub(2);
                 for (i, w) in pts.windows(2).enumerate() {
-                    let butt = pen.cap == Cap::Butt;
-                    self.segment(w[0], w[1], half, fade, [butt && i == 0, butt && i == last]);
+                    self.segment(w[0], w[1], half, [butt && i == 0, butt && i == last]);
                 }
             }
         }
     }
 
     /// Adds one segment as a capsule of radius `half`; `butt` squares off its start or end.
-    fn segment(&mut self, a: Point, b: Point, half: f32, fade: f32, butt: [bool; 2]) {
+    fn segment(&mut self, a: Point, b: Point, half: f32, butt: [bool; 2]) {
         // Pixel centres farther than `reach` from the centre line get nothing.
         let reach = half + 0.5;
         let (dx, dy) = (b.x - a.x, b.y - a.y);
@@ -219,7 +220,6 @@ impl Strokes {
             hi,
             cut,
             reach,
-            fade,
         };
         let rows = pixels(a.y.min(b.y) - reach, a.y.max(b.y) + reach, self.height);
         // Reciprocals, not divisions per row (a pixel the rounding might leave out of a row's
@@ -291,6 +291,7 @@ impl Strokes {
             "a buffer of the pixmap's size"
         );
         // Coverage is rounded to sixteenths (see `LEVELS`): one opacity per level.
+        let alpha = alpha * core::mem::replace(&mut self.fade, 1.0);
         let opacity: [u32; LEVELS + 1] = core::array::from_fn(|k| {
             #[expect(clippy::cast_precision_loss, reason = "0 to 16")]
             let c = k as f32 / LEVELS as f32;
@@ -336,6 +337,9 @@ const LEVELS: usize = 16;
 /// The pixels (rows or columns, below `end`) that meet the interval `[lo, hi]`; empty when
 /// none do, or when a bound is NaN.
 pub(crate) fn pixels(lo: f32, hi: f32, end: usize) -> core::ops::Range<usize> {
+    if lo.is_nan() || hi.is_nan() {
+        return 0..0;
+    }
     #[expect(clippy::cast_precision_loss, reason = "pixmap sizes are at most 4096")]
     let end = end as f32;
     let (lo, hi) = (lo.floor().max(0.0), hi.ceil().min(end));
@@ -428,27 +432,39 @@ impl Dashes {
         }
     }
 
-    /// Calls `emit(a, b, [starts a dash, ends a dash])` for the dashed parts of `a`–`b`.
-    fn segment(&mut self, a: Point, b: Point, mut emit: impl FnMut(Point, Point, [bool; 2])) {
+    /// Calls `emit(a, b, butt)` for the dashed parts of `a`–`b`, with butt ends where a dash
+    /// starts or stops, and where the polyline does (`ends`: whether this segment starts or
+    /// ends it with a butt cap) inside a dash.
+    fn segment(
+        &mut self,
+        a: Point,
+        b: Point,
+        ends: [bool; 2],
+        mut emit: impl FnMut(Point, Point, [bool; 2]),
+    ) {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         let len = length(dx, dy);
-        if len.is_nan() || len <= 0.0 {
+        if !len.is_finite() || len <= 0.0 {
+            return;
+        }
+        // A segment that would take more than `MAX_DASHES` dashes is drawn solid: a pattern
+        // that fine is a faint solid line to the eye, and walking it would take seconds.
+        if len > MAX_DASHES * (self.on + self.off) {
+            emit(a, b, ends);
             return;
         }
         let at = |s: f32| Point::from_xy(a.x + dx * (s / len), a.y + dy * (s / len));
         let mut s = 0.0;
         while s < len {
             let step = self.left.min(len - s);
-            if self.in_dash {
+            // Pieces much shorter than a pixel (a dash ending just past a vertex) add nothing.
+            if self.in_dash && step > 1e-3 {
                 // A dash starts where its pattern length is whole, and ends where it runs out.
-                emit(
-                    at(s),
-                    at(s + step),
-                    [self.left == self.on, step == self.left],
-                );
-            }
-            if s + step == s {
-                return; // coordinates too large for the pattern to advance
+                let butt = [
+                    self.left == self.on || (ends[0] && s == 0.0),
+                    step == self.left || (ends[1] && s + step >= len),
+                ];
+                emit(at(s), at(s + step), butt);
             }
             s += step;
             self.left -= step;
@@ -459,6 +475,9 @@ impl Dashes {
         }
     }
 }
+
+/// The most dashes a segment is split into (see [`Dashes::segment`]).
+const MAX_DASHES: f32 = 1e5;
 
 #[cfg(test)]
 mod tests {
@@ -538,6 +557,7 @@ mod tests {
             d.segment(
                 Point::from_xy(w[0], 0.0),
                 Point::from_xy(w[1], 0.0),
+                [false, false],
                 |a, b, ends| out.push((a.x, b.x, ends)),
             );
         }
@@ -594,13 +614,71 @@ mod tests {
     }
 
     #[test]
-    fn lines_thinner_than_a_pixel_fade() {
-        let s = coverage_after(
+    fn lines_thinner_than_a_pixel_fade_but_stay_visible() {
+        // Drawn a pixel wide at a quarter of the opacity: a pixel row fully covered by a
+        // quarter-pixel line is a quarter of the way from white to black.
+        let mut pixmap = Pixmap::new(64, 64).expect("pixmap");
+        pixmap.fill(tiny_skia::Color::WHITE);
+        let mut s = Strokes::new(64, 64);
+        s.polyline(
             &[Point::from_xy(0.0, 20.5), Point::from_xy(40.0, 20.5)],
             pen(0.25),
         );
         let column: f32 = (0..64).map(|y| s.coverage[y * 64 + 30]).sum();
-        assert!((column - 0.25).abs() < 1e-6, "{column}");
+        assert!((column - 1.0).abs() < 1e-6, "{column}");
+        s.paint(&mut pixmap, [0, 0, 0], 1.0);
+        assert_eq!(pixmap.pixel(30, 20).expect("pixel").red(), 191);
+        // A twentieth of a pixel on the boundary between two rows: half of it in each, still
+        // drawn (faintly) rather than rounded away.
+        s.polyline(
+            &[Point::from_xy(0.0, 40.0), Point::from_xy(40.0, 40.0)],
+            pen(0.05),
+        );
+        s.paint(&mut pixmap, [0, 0, 0], 1.0);
+        let [a, b] = [39, 40].map(|y| pixmap.pixel(30, y).expect("pixel").red());
+        assert!(a == b && a < 255 && a > 245, "{a} {b}");
+    }
+
+    #[test]
+    fn the_last_dash_of_a_butt_ended_line_is_butt_ended() {
+        // Dash 3, gap 2 on 0 → 4 → 6.5: the second dash is cut by the line's end at 6.5.
+        let mut d = Dashes::new(3.0, 2.0);
+        let mut out = Vec::new();
+        for (i, w) in [[0.0, 4.0], [4.0, 6.5]].into_iter().enumerate() {
+            d.segment(
+                Point::from_xy(w[0], 0.0),
+                Point::from_xy(w[1], 0.0),
+                [i == 0, i == 1],
+                |a, b, ends| out.push((a.x, b.x, ends)),
+            );
+        }
+        assert_eq!(out, [(0.0, 3.0, [true, true]), (5.0, 6.5, [true, true])]);
+    }
+
+    #[test]
+    fn patterns_too_fine_to_walk_are_drawn_solid() {
+        let mut d = Dashes::new(1e-3, 1e-3);
+        let mut out = Vec::new();
+        let (a, b) = (Point::from_xy(0.0, 0.0), Point::from_xy(1e9, 0.0));
+        d.segment(a, b, [false, false], |a, b, ends| {
+            out.push((a.x, b.x, ends))
+        });
+        assert_eq!(out, [(0.0, 1e9, [false, false])]);
+        // An infinite segment gives nothing.
+        d.segment(
+            a,
+            Point::from_xy(f32::INFINITY, 0.0),
+            [false, false],
+            |_, _, _| panic!("nothing to draw"),
+        );
+    }
+
+    #[test]
+    fn nan_bounds_give_no_pixels() {
+        assert_eq!(pixels(f32::NAN, 5.0, 10), 0..0);
+        assert_eq!(pixels(2.0, f32::NAN, 10), 0..0);
+        assert_eq!(pixels(-3.0, 4.5, 10), 0..5);
+        assert_eq!(pixels(8.5, 30.0, 10), 8..10);
     }
 
     #[test]

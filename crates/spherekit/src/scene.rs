@@ -986,6 +986,11 @@ impl<P: ScenePoint> Built<P> {
                 self.curve.eval_many(&ts, &mut ps);
                 flat(&ps)
             }
+            "angular_velocity" | "angular_acceleration"
+                if P::angular(&self.curve.jet(domain[0])).is_none() =>
+            {
+                Vec::new()
+            }
             "velocity" | "acceleration" | "angular_velocity" | "angular_acceleration" => {
                 let ts = scene.parameters(domain);
                 let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
