@@ -7,10 +7,10 @@ default:
 
 # Sample an example scene (orientations on S³) with the CLI
 demo:
-    cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- sample examples/orientations.json --deriv
+    cargo run --quiet --release -p spherekit-cli --bin spherekit -- sample examples/orientations.json --deriv
 
 # Everything CI runs, fast checks first
-test: fmt-check lint unit doc test-wasm test-e2e
+test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e
 
 # Formatting
 fmt-check:
@@ -19,6 +19,25 @@ fmt-check:
 # Clippy on every target, warnings are errors
 lint:
     cargo clippy --workspace --all-targets --all-features --locked -- -D warnings
+
+# Clippy for the browser target (the crates that ship to wasm), warnings are errors
+lint-wasm:
+    bash scripts/setup-web.sh cargo clippy -p spherekit-wasm --target wasm32-unknown-unknown --locked -- -D warnings
+
+# The core crate alone, as a user gets it: default features, and no-default-features with libm
+core-features:
+    cargo test -p spherekit --locked --lib --tests
+    cargo check -p spherekit --locked --no-default-features --features libm
+
+# The committed robustness corpus is what the generator writes from the method registry
+corpus-check:
+    cargo run --quiet --locked -p spherekit-cli -- methods --json > target/registry.json
+    python3 scripts/robustness_corpus.py --registry target/registry.json --check
+
+# Rewrite tests/robustness from the generator (after adding a method or a case)
+corpus:
+    cargo run --quiet --locked -p spherekit-cli -- methods --json > target/registry.json
+    python3 scripts/robustness_corpus.py --registry target/registry.json
 
 # Unit, integration, property and CLI tests, and doctests
 unit:
@@ -34,15 +53,15 @@ duplicates:
 
 # Re-bless failing golden images (UPDATE_GOLDENS=force rewrites all); refused in CI
 bless:
-    UPDATE_GOLDENS=1 cargo test -p spherekit-snapshot --test golden
+    UPDATE_GOLDENS=1 cargo test -p spherekit-cli --test golden
 
 # Regenerate tests/golden/contact-sheet.png from the references
 contact-sheet:
-    cargo run --quiet -p spherekit-snapshot --example contact_sheet
+    cargo run --quiet -p spherekit-cli --example contact_sheet
 
 # Render a scene to a PNG: just render SCENE OUT [SIZE]
 render scene out size="512":
-    cargo run --quiet --release -p spherekit-snapshot --bin spherekit -- render {{scene}} -o {{out}} --size {{size}}
+    cargo run --quiet --release -p spherekit-cli --bin spherekit -- render {{scene}} -o {{out}} --size {{size}}
 
 # Criterion benches of the core and the renderer (by hand; CI only compiles them)
 bench:

@@ -7,35 +7,45 @@ Each case is one scene file named after what it tests and its expected outcome:
 `NAME.ok.json` (must build; every sample finite, unit norm) or `NAME.err.json` with
 `NAME.err.txt` beside it holding a substring the one-line error must contain. The
 expectations are the function expect_err below; every case not in it is expected to succeed.
-Run from the repository root: `python3 scripts/robustness_corpus.py`.
+The methods, their spheres, knot rules and minimum point counts come from the method
+registry (`spherekit methods --json`), so a new method gets its cases without an edit here.
+
+Run from the repository root (`just corpus` writes, `just corpus-check` compares):
+    python3 scripts/robustness_corpus.py --registry REGISTRY.json [--check]
 """
 
+import argparse
+import filecmp
 import json
 import math
 import os
 import shutil
+import sys
+import tempfile
 
 OUT = "tests/robustness/degenerate"
 
 # Methods and the spaces they run on ("Sn" stands for S5 here).
 ALL_SPACES = ["S2", "S3", "S5"]
-METHODS = {
-    "geodesic": ALL_SPACES,
-    "nlerp": ALL_SPACES,
-    "bezier": ALL_SPACES,
-    "catmull-rom": ALL_SPACES,
-    "beta": ALL_SPACES,
-    "arc-blend": ALL_SPACES,
-    "corner-blend": ALL_SPACES,
-    "bezier-kim": ["S3"],
-    "bspline-kim": ["S3"],
-    "squad": ["S3"],
-    "gamma": ["S3"],
-}
-TAKES_KNOTS = {"geodesic", "nlerp", "catmull-rom", "squad", "gamma"}
-# Methods whose knots are at the inner points p₁ … p_{n−2} only.
-KNOTS_AT_INNER = {"gamma", "catmull-rom"}
-MIN_POINTS = {"catmull-rom": 4, "gamma": 4, "bspline-kim": 4, "arc-blend": 3, "corner-blend": 3, "beta": 3}
+METHODS = {}      # id -> spaces
+TAKES_KNOTS = set()
+KNOTS_AT_INNER = set()  # knots at the inner points p₁ … p_{n−2} only
+MIN_POINTS = {}
+
+
+def load_registry(path):
+    """Fills the tables above from `spherekit methods --json`."""
+    with open(path) as f:
+        registry = json.load(f)
+    for m in registry:
+        METHODS[m["id"]] = ["S3"] if m["spaces"] == "S3" else ALL_SPACES
+        knots = m["knots"]
+        if isinstance(knots, dict):
+            TAKES_KNOTS.add(m["id"])
+            if knots["skip"] == 1:
+                KNOTS_AT_INNER.add(m["id"])
+        MIN_POINTS[m["id"]] = m["min_points"]
+
 
 # Wide parameter list: far outside, just outside, at, just inside each end of [0, 1] and [0, 3].
 EDGE_PARAMS = [-1e300, -1.0, -1e-12, -0.0, 0.0, 1e-12, 0.5, 1.0 - 1e-12, 1.0, 1.0 + 1e-12,
@@ -338,7 +348,7 @@ def bad_cases():
         ("knots_not_increasing", "{" + S2 + ',"knots":[0,2,1]}', "knots[2]"),
         ("knots_repeated", "{" + S2 + ',"knots":[0,1,1]}', "knots[2]"),
         ("knots_wrong_count", "{" + S2 + ',"knots":[0,1]}', "knots: expected 3 knots, got 2"),
-        ("knots_for_bezier", '{"space":"S2","method":"bezier","points":[[1,0,0],[0,1,0]],"knots":[0,1]}', 'knots: method "bezier" computes its own knots'),
+        ("knots_for_bezier", '{"space":"S2","method":"bezier","points":[[1,0,0],[0,1,0]],"knots":[0,1]}', 'knots: method "bezier" takes no knots'),
         # Found by fuzzing (scene_bytes): 1e-96 spacing made |acceleration jumps| overflow.
         ("knots_spacing_1e-96", '{"space":"S2","method":"catmull-rom","points":[[0.9245181863860598,0.09276122906808075,0.36967753167214523],[0.6578469395012764,0.6773445735480922,0.32930492385288923],[0.06933930854407318,0.9777827086264879,-0.19782071428866735],[-0.5319188672180433,0.7307624041144873,-0.4278418252465374],[-0.9702795301900121,0.23908210989940434,-0.03738151976978039]],"knots":[0.0,1e-96,1000000.000001],"samples":257}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
         ("knots_spacing_subnormal", "{" + S2 + ',"knots":[0,5e-324,1]}', "knots[1] − knots[0] must be from 1e-50 to 1e50"),
@@ -372,36 +382,69 @@ def bad_cases():
     ]
 
 
-def main():
-    if os.path.isdir(BAD):
-        shutil.rmtree(BAD)
-    os.makedirs(BAD)
+def write(root):
+    bad_dir = os.path.join(root, "bad")
+    out_dir = os.path.join(root, "degenerate")
+    for d in (bad_dir, out_dir):
+        if os.path.isdir(d):
+            shutil.rmtree(d)
+        os.makedirs(d)
     for name, text, want in bad_cases():
         data = text if isinstance(text, bytes) else text.encode()
-        with open(f"{BAD}/{name}.json", "wb") as f:
+        with open(f"{bad_dir}/{name}.json", "wb") as f:
             f.write(data)
-        with open(f"{BAD}/{name}.txt", "w") as f:
+        with open(f"{bad_dir}/{name}.txt", "w") as f:
             f.write(want + "\n")
-    print(f"{len(bad_cases())} bad scenes in {BAD}")
-
-    if os.path.isdir(OUT):
-        shutil.rmtree(OUT)
-    os.makedirs(OUT)
     n_ok = n_err = 0
     for name, s in cases():
         err = expect_err(name)
         if err is None:
-            path = f"{OUT}/{name}.ok.json"
+            path = f"{out_dir}/{name}.ok.json"
             n_ok += 1
         else:
-            path = f"{OUT}/{name}.err.json"
-            with open(f"{OUT}/{name}.err.txt", "w") as f:
+            path = f"{out_dir}/{name}.err.json"
+            with open(f"{out_dir}/{name}.err.txt", "w") as f:
                 f.write(err + "\n")
             n_err += 1
         with open(path, "w") as f:
             json.dump(s, f, separators=(",", ":"))
             f.write("\n")
-    print(f"{n_ok} ok, {n_err} err cases in {OUT}")
+    return len(bad_cases()), n_ok, n_err
+
+
+def differences(a, b):
+    """Files that differ, or are in only one of the trees a and b."""
+    out = []
+    cmp = filecmp.dircmp(a, b)
+    stack = [("", cmp)]
+    while stack:
+        prefix, c = stack.pop()
+        out += [prefix + n for n in c.left_only + c.right_only]
+        _, mismatch, errors = filecmp.cmpfiles(c.left, c.right, c.common_files, shallow=False)
+        out += [prefix + n for n in mismatch + errors]
+        stack += [(prefix + n + "/", sub) for n, sub in c.subdirs.items()]
+    return sorted(out)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--registry", required=True, help="the output of `spherekit methods --json`")
+    parser.add_argument("--check", action="store_true", help="compare with tests/robustness instead of writing")
+    args = parser.parse_args()
+    load_registry(args.registry)
+    root = os.path.dirname(OUT)
+    if args.check:
+        with tempfile.TemporaryDirectory() as tmp:
+            write(tmp)
+            diff = differences(root, tmp)
+        if diff:
+            print(f"tests/robustness is not what scripts/robustness_corpus.py writes ({len(diff)} files differ, "
+                  f"e.g. {', '.join(diff[:5])}): run `just corpus` and commit", file=sys.stderr)
+            sys.exit(1)
+        print("tests/robustness matches the generator")
+        return
+    n_bad, n_ok, n_err = write(root)
+    print(f"{n_bad} bad scenes in {root}/bad; {n_ok} ok, {n_err} err cases in {OUT}")
 
 
 if __name__ == "__main__":

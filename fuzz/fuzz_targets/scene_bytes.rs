@@ -10,7 +10,7 @@
 use libfuzzer_sys::fuzz_target;
 
 use arbitrary as arb;
-#[path = "../../crates/spherekit-snapshot/tests/support/robust.rs"]
+#[path = "../../crates/spherekit-cli/tests/support/robust.rs"]
 mod robust;
 
 fuzz_target!(|data: &[u8]| {

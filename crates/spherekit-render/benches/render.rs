@@ -6,7 +6,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use spherekit::scene::Scene;
+use spherekit_scene::Scene;
 
 /// A 512×512 S³ scene: three body-axis trajectories (flattened to 2e-4 rad, about 300 points
 /// each) and the speed plot strip.

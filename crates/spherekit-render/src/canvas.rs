@@ -58,7 +58,7 @@ impl Canvas {
         let s = f64::from(size);
         #[expect(clippy::cast_possible_truncation, reason = "pixel scale")]
         let scale = (s / 512.0) as f32;
-        let (c, radius) = crate::view::sphere_frame(size);
+        let (c, radius) = crate::camera::sphere_frame(size);
         Self {
             center: (c, c),
             radius,

@@ -15,7 +15,7 @@
 //! # Example
 //!
 //! ```
-//! use spherekit::scene::Scene;
+//! use spherekit_scene::Scene;
 //!
 //! let scene = Scene::from_json(r#"{"space":"S2","method":"geodesic",
 //!     "points":[[1,0,0],[0,1,0],[0,0,1]]}"#).unwrap();
@@ -23,22 +23,22 @@
 //! assert_eq!((pixmap.width(), pixmap.height()), (128, 128));
 //! ```
 
+mod camera;
 mod canvas;
 mod flatten;
 mod plot;
 mod stroke;
-mod view;
 
 use core::fmt;
 use std::cell::RefCell;
 
 use spherekit::glam::DVec3;
-use spherekit::scene::{Built, BuiltCurve, Method, Scene, SceneError, Space};
 use spherekit::{Ambient, Curve, Manifold, S2Point, Side, SnPoint, UnitQuat};
+use spherekit_scene::{Built, BuiltCurve, Plot, Scene, SceneError, View};
 use tiny_skia::{Color, Pixmap, Rect};
 
+pub use camera::{Camera, turn_towards, yaw_pitch};
 use canvas::{Canvas, LineStyle, Rgb, Shape};
-pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, Plot, View};
 
 /// The smallest and largest image sizes [`render`] accepts (pixels, the sphere's square).
 pub const SIZE_RANGE: (u32, u32) = (16, 4096);
@@ -67,13 +67,6 @@ const GRATICULE: Rgb = [0x7d, 0x8a, 0x99];
 pub enum RenderError {
     /// The scene itself is bad.
     Scene(SceneError),
-    /// A `view` option is bad.
-    View {
-        /// The field, such as `view.camera`.
-        field: String,
-        /// What is wrong.
-        message: String,
-    },
     /// The requested size is outside [`SIZE_RANGE`].
     Size(u32),
     /// The scene's sphere cannot be drawn.
@@ -84,10 +77,6 @@ impl fmt::Display for RenderError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::Scene(e) => write!(f, "{e}"),
-            // The field may quote an unknown `view` key, control characters and all.
-            Self::View { field, message } => {
-                write!(f, "{}: {message}", spherekit::scene::one_line(field))
-            }
             Self::Size(s) => write!(
                 f,
                 "size: {s} is outside {}..={} pixels",
@@ -134,23 +123,24 @@ pub fn render_built(
     if !(SIZE_RANGE.0..=SIZE_RANGE.1).contains(&size) {
         return Err(RenderError::Size(size));
     }
-    if matches!(scene.space, Space::Sn(m) if m != 1) {
+    if !scene.space.drawable() {
         return Err(RenderError::Space(scene.space.name()));
     }
-    let view = view_of(scene, curves)?;
+    let view = scene.view()?;
+    let camera = Camera::of(&view, curves);
     let strip = if view.plot == Plot::Speed {
         size / 4
     } else {
         0
     };
-    let axes = view.axes();
+    let axes = camera.axes();
     let mut pixmap = backdrop(size, strip, axes).ok_or(RenderError::Size(size))?;
     let mut canvas = Canvas::new(size, axes);
     let single = curves.len() == 1;
     let mut series = Vec::new();
     for (i, (spec, curve)) in scene.curves.iter().zip(curves).enumerate() {
         let color = spec.color.unwrap_or(PALETTE[i % PALETTE.len()]);
-        let polygon = !interpolates(spec.method);
+        let polygon = !spec.method.interpolates;
         let s = match curve {
             BuiltCurve::S2(b) => {
                 draw_points(&mut canvas, b, color, polygon, &view, &|p: &S2Point| {
@@ -180,56 +170,14 @@ pub fn render_built(
     Ok(pixmap)
 }
 
-/// The view [`render_built`] draws `curves` of `scene` with (its default camera depends on the
-/// points), so an interactive caller can project and pick what it shows.
+/// The camera [`render_built`] draws `curves` of `scene` with (its default depends on the
+/// points), so that an interactive caller can project and pick what it shows.
 ///
 /// # Errors
 ///
-/// [`RenderError::View`] for a bad `view`.
-pub fn view_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<View, RenderError> {
-    View::from_json(
-        scene.view.as_ref(),
-        scene.space == Space::S3,
-        facing(curves),
-        curves.len() > 1,
-    )
-}
-
-/// The mean of the input points of curves on S² or S¹, for the default camera.
-fn facing(curves: &[BuiltCurve]) -> Option<DVec3> {
-    let mut sum = DVec3::ZERO;
-    let mut count = 0.0;
-    for c in curves {
-        match c {
-            BuiltCurve::S2(b) => {
-                for p in &b.inputs {
-                    sum += p.as_dvec3();
-                    count += 1.0;
-                }
-            }
-            BuiltCurve::Sn(b) => {
-                for p in &b.inputs {
-                    sum += DVec3::new(p.coords()[0], p.coords()[1], 0.0);
-                    count += 1.0;
-                }
-            }
-            BuiltCurve::S3(_) => return None,
-        }
-    }
-    (count > 0.0).then(|| sum / count)
-}
-
-/// Whether a method's input points lie on its curve (otherwise their polygon is drawn).
-fn interpolates(method: Method) -> bool {
-    !matches!(
-        method,
-        Method::Bezier
-            | Method::BezierKim
-            | Method::BsplineKim
-            | Method::Gamma
-            | Method::CornerBlend
-            | Method::CatmullRom
-    )
+/// [`RenderError::Scene`] for a bad `view`.
+pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<Camera, RenderError> {
+    Ok(Camera::of(&scene.view()?, curves))
 }
 
 /// Where the plot strip goes in a frame of `size` with a strip `strip` pixels high, if any.

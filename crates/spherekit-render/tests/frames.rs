@@ -5,8 +5,8 @@
 //! the bytes to a canvas as straight alpha), and redrawing from the kept backdrop gives the
 //! pixels of a fresh drawing.
 
-use spherekit::scene::Scene;
 use spherekit_render::{RenderError, render};
+use spherekit_scene::Scene;
 
 fn scene(text: &str) -> Scene {
     Scene::from_json(text).expect("valid scene")

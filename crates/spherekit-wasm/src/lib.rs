@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! WebAssembly bindings for the browser playground (`web/index.html`) and the docs widget
-//! (`web/widget.js`): a thin layer over [`spherekit::scene`] and [`spherekit_render`] with no
-//! math of its own.
+//! (`web/widget.js`): bindings only, over [`spherekit_scene`] (scenes, the method registry,
+//! document editing), [`spherekit_render`] (pixels, the camera, picking) and the core's
+//! continuity classes.
 //!
-//! - Free functions evaluate a scene given as JSON text: [`methods`], [`validate`],
-//!   [`sample`] (the `spherekit sample` output, with derived control points, auxiliary vertices
-//!   and solver info), [`sample_array`] (one field as a `Float64Array`), [`continuity`] (jumps
-//!   at the joints from one-sided jets) and [`render_rgba`].
-//! - [`Playground`] is the page's stateful handle: it keeps the built curves, rebuilds only the
+//! - Free functions evaluate a scene given as JSON text: [`methods`] (the registry, parameter
+//!   schemas included), [`validate`], [`sample`] (the `spherekit sample` output),
+//!   [`sample_array`] (one field as a `Float64Array`), [`continuity`] and [`render_rgba`].
+//! - [`Playground`] is the page's stateful handle on a [`Document`]: it rebuilds only the
 //!   curves an edit touched (a camera change only re-renders), and draws into a canvas.
 //!
 //! Every bad input gives a `JsError` whose message is the line the CLI prints after
@@ -18,20 +18,51 @@
 //! Coordinates follow the scene format: S² points `[x, y, z]`, S³ keys `[w, x, y, z]`. Screen
 //! positions are pixels of an image `size` pixels wide, as [`spherekit_render::render`] draws it.
 
-use serde_json::{Map, Value, json};
-use spherekit::glam::{DQuat, DVec3};
-use spherekit::scene::{BuiltCurve, Method, Scene, SceneError, Space};
-use spherekit::{Curve, Jet, Manifold, Side, UnitQuat};
-use spherekit_render::{PALETTE, View, render_built, view_of};
+use core::fmt;
+
+use serde_json::{Value, json};
+use spherekit::UnitQuat;
+use spherekit::glam::DVec3;
+use spherekit_render::{Camera, PALETTE, camera_of, render_built, turn_towards};
+use spherekit_scene::{
+    BuiltCurve, Document, EditError, SAMPLE_FIELDS, Scene, SceneError, Space, continuity_json,
+    registry_json,
+};
 use tiny_skia::Pixmap;
 use wasm_bindgen::prelude::*;
 
-mod input;
-
 include!(concat!(env!("OUT_DIR"), "/presets.rs"));
 
-pub use input::InputError;
-use input::PointEdit;
+/// A bad argument from the page that the scene format does not see.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum InputError {
+    /// Coordinates are not finite or have the wrong count.
+    Coords(String),
+    /// The sample output has no such field.
+    Field(String),
+    /// There is no curve with this index.
+    NoCurve(usize),
+    /// The canvas has no 2D context or refused the image.
+    NoContext,
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Coords(m) => write!(f, "coordinates: {m}"),
+            Self::Field(name) => write!(
+                f,
+                "field \"{name}\" is not a sample field ({})",
+                SAMPLE_FIELDS.join(", ")
+            ),
+            Self::NoCurve(i) => write!(f, "curves[{i}]: there is no such curve"),
+            Self::NoContext => write!(f, "canvas: no 2D context"),
+        }
+    }
+}
+
+impl core::error::Error for InputError {}
 
 /// Installs the panic hook that reports a panic to the browser console (called on load).
 #[wasm_bindgen(start)]
@@ -39,26 +70,34 @@ pub fn start() {
     console_error_panic_hook::set_once();
 }
 
-fn js(e: impl core::fmt::Display) -> JsError {
+fn js(e: impl fmt::Display) -> JsError {
     JsError::new(&e.to_string())
 }
 
-/// The curve methods as JSON: `[{ "id", "summary", "spaces" }, …]`, in the order
-/// `spherekit methods` lists them.
+/// A unit quaternion from `[w, x, y, z]`.
+fn quat(c: &[f64]) -> Result<UnitQuat, InputError> {
+    match c {
+        &[w, x, y, z] => UnitQuat::from_wxyz([w, x, y, z])
+            .map_err(|e| InputError::Coords(format!("quaternion {}", e.predicate()))),
+        _ => Err(InputError::Coords(format!(
+            "a quaternion has 4 numbers [w, x, y, z], got {}",
+            c.len()
+        ))),
+    }
+}
+
+fn json_arg(text: &str) -> Result<Value, EditError> {
+    serde_json::from_str(text).map_err(|e| EditError::Json(e.to_string()))
+}
+
+/// The method registry as JSON, as `spherekit methods --json` prints it: `[{ "id", "type",
+/// "summary", "continuity", "source", "spaces", "knots", "min_points", "interpolates",
+/// "params": [{ "name", "label", "summary", "type", "default", "min", "max", "choices",
+/// "per_joint", "spaces", "advanced" }, …] }, …]`. The page builds its controls from it.
 #[wasm_bindgen]
 #[must_use]
 pub fn methods() -> String {
-    let list: Vec<Value> = Method::ALL
-        .iter()
-        .map(|m| {
-            json!({
-                "id": m.id(),
-                "summary": m.summary(),
-                "spaces": m.support().describe(),
-            })
-        })
-        .collect();
-    Value::Array(list).to_string()
+    registry_json().to_string()
 }
 
 /// The example scenes (the golden-image scenes of `tests/golden`) as JSON:
@@ -80,7 +119,7 @@ pub fn presets() -> String {
 /// An [`InputError`] for a quaternion that is not 4 finite numbers of non-zero length.
 #[wasm_bindgen]
 pub fn key_axes(key: &[f64]) -> Result<Vec<f64>, JsError> {
-    let q = input::quat(key)?;
+    let q = quat(key)?;
     Ok([DVec3::X, DVec3::Y, DVec3::Z]
         .iter()
         .flat_map(|a| q.rotate(*a).to_array())
@@ -95,7 +134,7 @@ pub fn key_axes(key: &[f64]) -> Result<Vec<f64>, JsError> {
 /// As [`key_axes`].
 #[wasm_bindgen]
 pub fn key_to_axis_angle(key: &[f64]) -> Result<Vec<f64>, JsError> {
-    let (axis, angle) = input::quat(key)?.to_axis_angle();
+    let (axis, angle) = quat(key)?.to_axis_angle();
     Ok(vec![angle.to_degrees(), axis.x, axis.y, axis.z])
 }
 
@@ -107,7 +146,7 @@ pub fn key_to_axis_angle(key: &[f64]) -> Result<Vec<f64>, JsError> {
 #[wasm_bindgen]
 pub fn axis_angle_to_key(degrees: f64, x: f64, y: f64, z: f64) -> Result<Vec<f64>, JsError> {
     let q = UnitQuat::from_axis_angle(DVec3::new(x, y, z), degrees.to_radians())
-        .map_err(|e| InputError::Coords(format!("axis {e}")))?;
+        .map_err(|e| InputError::Coords(format!("axis {}", e.predicate())))?;
     Ok(q.to_wxyz().to_vec())
 }
 
@@ -125,8 +164,8 @@ fn load(scene: &str) -> Result<(Scene, Vec<BuiltCurve>), SceneError> {
 /// The CLI's message for a bad scene or view.
 #[wasm_bindgen]
 pub fn validate(scene: &str) -> Result<(), JsError> {
-    let (scene, curves) = load(scene).map_err(js)?;
-    view_of(&scene, &curves).map_err(js)?;
+    let (scene, _) = load(scene).map_err(js)?;
+    scene.view().map_err(js)?;
     Ok(())
 }
 
@@ -172,11 +211,11 @@ fn field_of(
 }
 
 /// The continuity report of every curve as JSON: per curve a list of interior joints
-/// `{ "t", "c0", "c1", "c2", "g1", "order", "class" }` with the jumps of point, first and second
+/// `{ "t", "c0", "c1", "c2", "g1", "class" }` with the jumps of point, first and second
 /// derivative and unit tangent (ambient norms of left minus right one-sided limits,
-/// [`spherekit::continuity`]), the highest order k ≤ 2 whose jumps are all below 1e-9
-/// (`null` when the points differ), and `class`: `"C²"`, `"C¹"`, `"G¹"` (direction continuous,
-/// speed not), `"C⁰"` or `"broken"`.
+/// [`spherekit::continuity`]) and the class ([`spherekit::JointContinuity::class`]): `"C⁰"`,
+/// `"G¹"` (direction continuous, speed not), `"C¹"`, `"C²"`, up to the `"Cⁿ"` a blend
+/// guarantees, or `"broken"` — what `spherekit sample --continuity` prints.
 ///
 /// # Errors
 ///
@@ -184,38 +223,19 @@ fn field_of(
 #[wasm_bindgen]
 pub fn continuity(scene: &str) -> Result<String, JsError> {
     let (_, curves) = load(scene).map_err(js)?;
-    Ok(continuity_json(&curves).to_string())
+    Ok(report(&curves).to_string())
 }
 
-/// The tolerance of the continuity readout's `order`.
-pub const CONTINUITY_TOLERANCE: f64 = 1e-9;
-
-fn continuity_json(curves: &[BuiltCurve]) -> Value {
-    let list = curves.iter().map(|c| {
-        let report = match c {
-            BuiltCurve::S2(b) => spherekit::continuity(&Dyn(&*b.curve)),
-            BuiltCurve::S3(b) => spherekit::continuity(&Dyn(&*b.curve)),
-            BuiltCurve::Sn(b) => spherekit::continuity(&Dyn(&*b.curve)),
-        };
-        Value::Array(
-            report
-                .iter()
-                .map(|j| {
-                    let order = j.order(CONTINUITY_TOLERANCE);
-                    let class = match order {
-                        None => "broken",
-                        Some(0) if j.g1 <= CONTINUITY_TOLERANCE => "G¹",
-                        Some(0) => "C⁰",
-                        Some(1) => "C¹",
-                        Some(_) => "C²",
-                    };
-                    json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2, "g1": j.g1,
-                            "order": order, "class": class })
-                })
-                .collect(),
-        )
-    });
-    Value::Array(list.collect())
+fn report(curves: &[BuiltCurve]) -> Value {
+    Value::Array(
+        curves
+            .iter()
+            .map(|c| {
+                let (joints, order) = c.continuity();
+                continuity_json(&joints, order)
+            })
+            .collect(),
+    )
 }
 
 /// Renders a scene as [`spherekit_render::render`] does and returns straight-alpha RGBA bytes,
@@ -242,22 +262,18 @@ fn straight_rgba(pixmap: Pixmap) -> Vec<u8> {
     pixmap.take()
 }
 
-/// The page's handle on one scene: the scene's JSON document, the validated scene, its built
-/// curves and the last rendered frame.
+/// The page's handle on one scene: the edited [`Document`] and the last rendered frame.
 ///
-/// Edits change the document and go through [`Scene::from_json`] again (so they are checked
-/// exactly like a pasted scene), but only curves whose description changed are rebuilt; a
-/// change of `view` re-renders without rebuilding. A failed edit leaves everything as it was.
+/// Edits go through [`Document`] (checked exactly like a pasted scene, rebuilding only the
+/// curves whose description changed); a change of `view` re-renders without rebuilding. A
+/// failed edit leaves everything as it was.
 #[wasm_bindgen]
 #[derive(Debug)]
 pub struct Playground {
-    doc: Map<String, Value>,
-    scene: Scene,
-    curves: Vec<BuiltCurve>,
+    doc: Document,
     /// Width of the last rendered frame (0 before the first render).
     width: u32,
     rgba: Vec<u8>,
-    builds: u32,
 }
 
 #[wasm_bindgen]
@@ -269,14 +285,8 @@ impl Playground {
     /// The CLI's message for a bad scene.
     #[wasm_bindgen(constructor)]
     pub fn new(scene: &str) -> Result<Self, JsError> {
-        let doc = parse_doc(scene).map_err(js)?;
-        let (scene, curves) = load(scene).map_err(js)?;
-        view_of(&scene, &curves).map_err(js)?;
         Ok(Self {
-            builds: u32::try_from(curves.len()).unwrap_or(u32::MAX),
-            doc,
-            scene,
-            curves,
+            doc: Document::from_json(scene).map_err(js)?,
             width: 0,
             rgba: Vec::new(),
         })
@@ -288,33 +298,33 @@ impl Playground {
     ///
     /// The CLI's message for a bad scene.
     pub fn set_scene(&mut self, scene: &str) -> Result<(), JsError> {
-        let doc = parse_doc(scene).map_err(js)?;
-        self.apply(doc)
+        self.doc.set_scene(scene).map_err(js)
     }
 
     /// The current scene as compact JSON text.
     #[must_use]
     pub fn scene_json(&self) -> String {
-        Value::Object(self.doc.clone()).to_string()
+        self.doc.to_json()
     }
 
     /// The space: `"S2"`, `"S3"` or `"S<m>"`.
     #[must_use]
     pub fn space(&self) -> String {
-        self.scene.space.name()
+        self.doc.scene().space.name()
     }
 
     /// The number of curves.
     #[must_use]
     pub fn curve_count(&self) -> usize {
-        self.scene.curves.len()
+        self.doc.scene().curves.len()
     }
 
     /// The colour each curve is drawn in, as `["#rrggbb", …]` JSON.
     #[must_use]
     pub fn colors(&self) -> String {
         let list: Vec<Value> = self
-            .scene
+            .doc
+            .scene()
             .curves
             .iter()
             .enumerate()
@@ -330,50 +340,38 @@ impl Playground {
     /// what changed").
     #[must_use]
     pub fn builds(&self) -> u32 {
-        self.builds
+        self.doc.builds()
     }
 
     /// Curve `curve`'s description as JSON: `{ "method", "points", "knots"?, "params"?, … }`.
     ///
     /// # Errors
     ///
-    /// An [`InputError`] for a curve that does not exist.
+    /// For a curve that does not exist.
     pub fn curve_json(&self, curve: usize) -> Result<String, JsError> {
-        let c = self.curve_doc(curve)?;
-        Ok(Value::Object(c.clone()).to_string())
+        Ok(Value::Object(self.doc.curve(curve).map_err(js)?.clone()).to_string())
     }
 
     /// Point `index` of curve `curve` as written in the scene.
     ///
     /// # Errors
     ///
-    /// An [`InputError`] for a point that does not exist.
+    /// For a point that does not exist.
     pub fn point(&self, curve: usize, index: usize) -> Result<Vec<f64>, JsError> {
-        let c = self.curve_doc(curve)?;
-        let p = c
-            .get("points")
-            .and_then(|p| p.get(index))
-            .and_then(Value::as_array)
-            .ok_or(InputError::NoPoint(index))?;
-        Ok(p.iter().filter_map(Value::as_f64).collect())
+        self.doc.point(curve, index).map_err(js)
     }
 
     /// Sets point `index` of curve `curve` (normalised when the curve is built).
     ///
     /// # Errors
     ///
-    /// The CLI's message when the curve rejects the point; an [`InputError`] for a bad index
-    /// or coordinates.
+    /// The CLI's message when the curve rejects the point; a bad index or coordinates.
     pub fn set_point(&mut self, curve: usize, index: usize, coords: &[f64]) -> Result<(), JsError> {
-        let p = input::point_value(coords)?;
-        self.edit_points(curve, |points| {
-            let slot = points.get_mut(index).ok_or(InputError::NoPoint(index))?;
-            *slot = p;
-            Ok(None)
-        })
+        self.doc.set_point(curve, index, coords).map_err(js)
     }
 
-    /// Inserts a point before `index` (`index` = count appends).
+    /// Inserts a point before `index` (`index` = count appends); knots and per-joint lists
+    /// follow.
     ///
     /// # Errors
     ///
@@ -384,54 +382,26 @@ impl Playground {
         index: usize,
         coords: &[f64],
     ) -> Result<(), JsError> {
-        let p = input::point_value(coords)?;
-        self.edit_points(curve, |points| {
-            if index > points.len() {
-                return Err(InputError::NoPoint(index));
-            }
-            points.insert(index, p);
-            Ok(Some(PointEdit::Insert(index)))
-        })
+        self.doc.insert_point(curve, index, coords).map_err(js)
     }
 
-    /// Removes point `index` of curve `curve`.
+    /// Removes point `index` of curve `curve`; knots and per-joint lists follow.
     ///
     /// # Errors
     ///
-    /// The CLI's message when too few points remain; an [`InputError`] for a bad index.
+    /// The CLI's message when too few points remain; a bad index.
     pub fn remove_point(&mut self, curve: usize, index: usize) -> Result<(), JsError> {
-        self.edit_points(curve, |points| {
-            if index >= points.len() {
-                return Err(InputError::NoPoint(index));
-            }
-            points.remove(index);
-            Ok(Some(PointEdit::Remove(index)))
-        })
+        self.doc.remove_point(curve, index).map_err(js)
     }
 
     /// Sets `params.<name>` of curve `curve` to a JSON value (`null` removes it).
     ///
     /// # Errors
     ///
-    /// The CLI's message for a bad parameter; an [`InputError`] for text that is not JSON.
+    /// The CLI's message for a bad parameter; text that is not JSON.
     pub fn set_param(&mut self, curve: usize, name: &str, value: &str) -> Result<(), JsError> {
-        let v: Value = serde_json::from_str(value).map_err(|e| InputError::Json(e.to_string()))?;
-        let mut doc = self.doc.clone();
-        let c = curve_doc_mut(&mut doc, curve)?;
-        let params = c
-            .entry("params")
-            .or_insert_with(|| Value::Object(Map::new()));
-        if let Value::Object(p) = params {
-            if v.is_null() {
-                p.remove(name);
-            } else {
-                p.insert(name.into(), v);
-            }
-            if p.is_empty() {
-                c.remove("params");
-            }
-        }
-        self.apply(doc)
+        let v = json_arg(value).map_err(js)?;
+        self.doc.set_param(curve, name, v).map_err(js)
     }
 
     /// Replaces curve `curve`'s fields other than `points` by those of a JSON object
@@ -441,20 +411,20 @@ impl Playground {
     ///
     /// The CLI's message for a bad curve.
     pub fn set_curve(&mut self, curve: usize, fields: &str) -> Result<(), JsError> {
-        let fields = match serde_json::from_str(fields) {
-            Ok(Value::Object(m)) => m,
-            Ok(_) => return Err(InputError::Json("expected an object".into()).into()),
-            Err(e) => return Err(InputError::Json(e.to_string()).into()),
+        let fields = match json_arg(fields).map_err(js)? {
+            Value::Object(m) => m,
+            _ => return Err(js(EditError::Json("expected an object".into()))),
         };
-        let mut doc = self.doc.clone();
-        let c = curve_doc_mut(&mut doc, curve)?;
-        let points = c.remove("points");
-        c.clear();
-        c.extend(fields);
-        if let Some(p) = points {
-            c.insert("points".into(), p);
-        }
-        self.apply(doc)
+        self.doc.set_curve(curve, fields).map_err(js)
+    }
+
+    /// Gives curve `curve` another method, keeping the parameters and knots it can take.
+    ///
+    /// # Errors
+    ///
+    /// The CLI's message when the method cannot take the curve's points.
+    pub fn set_method(&mut self, curve: usize, method: &str) -> Result<(), JsError> {
+        self.doc.set_method(curve, method).map_err(js)
     }
 
     /// Adds a curve with `method` through the same points as curve 0 (a single-curve scene
@@ -464,65 +434,34 @@ impl Playground {
     ///
     /// The CLI's message when the method cannot take these points.
     pub fn add_curve(&mut self, method: &str) -> Result<(), JsError> {
-        let mut doc = self.doc.clone();
-        let list = to_list(&mut doc)?;
-        let points = list
-            .first()
-            .and_then(|c| c.get("points"))
-            .cloned()
-            .unwrap_or(Value::Array(Vec::new()));
-        list.push(json!({ "method": method, "points": points }));
-        self.apply(doc)
+        self.doc.add_curve(method).map_err(js)
     }
 
     /// Removes curve `curve` (the last one cannot be removed).
     ///
     /// # Errors
     ///
-    /// An [`InputError`] for a bad index or the last curve.
+    /// A bad index or the last curve.
     pub fn remove_curve(&mut self, curve: usize) -> Result<(), JsError> {
-        let mut doc = self.doc.clone();
-        let list = to_list(&mut doc)?;
-        if curve >= list.len() {
-            return Err(InputError::NoCurve(curve).into());
-        }
-        if list.len() == 1 {
-            return Err(InputError::LastCurve.into());
-        }
-        list.remove(curve);
-        self.apply(doc)
+        self.doc.remove_curve(curve).map_err(js)
     }
 
-    /// Sets a `view` option (`camera`, `plot`, `frames`, `accuracy`) to a JSON value (`null`
-    /// removes it). Re-renders without rebuilding.
+    /// Sets a `view` option (`camera`, `plot`, `frames`, `accuracy`, `axes`) to a JSON value
+    /// (`null` removes it). Re-renders without rebuilding.
     ///
     /// # Errors
     ///
-    /// The CLI's message for a bad option; an [`InputError`] for text that is not JSON.
+    /// The CLI's message for a bad option; text that is not JSON.
     pub fn set_view(&mut self, name: &str, value: &str) -> Result<(), JsError> {
-        let v: Value = serde_json::from_str(value).map_err(|e| InputError::Json(e.to_string()))?;
-        let mut doc = self.doc.clone();
-        let view = doc
-            .entry("view")
-            .or_insert_with(|| Value::Object(Map::new()));
-        if let Value::Object(m) = view {
-            if v.is_null() {
-                m.remove(name);
-            } else {
-                m.insert(name.into(), v);
-            }
-            if m.is_empty() {
-                doc.remove("view");
-            }
-        }
-        self.apply(doc)
+        let v = json_arg(value).map_err(js)?;
+        self.doc.set_view(name, v).map_err(js)
     }
 
     /// The camera the scene is drawn with, `[w, x, y, z]` (the default one when the scene has
     /// none).
     #[must_use]
     pub fn camera(&self) -> Vec<f64> {
-        self.view().camera.to_wxyz().to_vec()
+        self.cam().orientation.to_wxyz().to_vec()
     }
 
     /// Rotates the view by a drag from pixel `(x0, y0)` to `(x1, y1)` starting from `camera0`
@@ -531,7 +470,7 @@ impl Playground {
     ///
     /// # Errors
     ///
-    /// An [`InputError`] for a camera that is not a quaternion.
+    /// For a camera that is not a quaternion.
     pub fn drag_view(
         &mut self,
         camera0: &[f64],
@@ -541,12 +480,10 @@ impl Playground {
         y1: f64,
         size: u32,
     ) -> Result<(), JsError> {
-        let mut view = self.view();
-        view.camera = input::quat(camera0)?;
-        let (a, b) = (view.unproject(x0, y0, size), view.unproject(x1, y1, size));
-        // The camera turns opposite to the drag.
-        let turn = DQuat::from_rotation_arc(b, a);
-        let camera = UnitQuat::try_new(turn * view.camera.as_dquat()).map_err(js)?;
+        let start = Camera {
+            orientation: quat(camera0)?,
+        };
+        let camera = start.dragged([x0, y0], [x1, y1], size);
         self.set_view("camera", &json!(camera.to_wxyz()).to_string())
     }
 
@@ -557,8 +494,14 @@ impl Playground {
     ///
     /// Does not fail for a scene that was drawn.
     pub fn pin_camera(&mut self) -> Result<(), JsError> {
-        let has_camera = self.doc.get("view").and_then(|v| v.get("camera")).is_some();
-        if has_camera {
+        if self
+            .doc
+            .scene()
+            .view
+            .as_ref()
+            .and_then(|v| v.get("camera"))
+            .is_some()
+        {
             return Ok(());
         }
         self.set_view("camera", &json!(self.camera()).to_string())
@@ -567,39 +510,25 @@ impl Playground {
     /// Pixel position and depth `[x, y, depth]` of a point of ℝ³ in an image `size` wide.
     #[must_use]
     pub fn project(&self, x: f64, y: f64, z: f64, size: u32) -> Vec<f64> {
-        self.view().project(DVec3::new(x, y, z), size).to_vec()
+        self.cam().project(DVec3::new(x, y, z), size).to_vec()
     }
 
     /// The visible sphere point `[x, y, z]` drawn at a pixel (the nearest rim point outside the
     /// disc).
     #[must_use]
     pub fn unproject(&self, x: f64, y: f64, size: u32) -> Vec<f64> {
-        self.view().unproject(x, y, size).to_array().to_vec()
+        self.cam().unproject(x, y, size).to_array().to_vec()
     }
 
     /// The input point (S² and S¹) or key (S³: any tip of its rotated body axes) drawn nearest
     /// to pixel `(x, y)` within `radius` pixels, on the visible side, as `[curve, index]`.
     #[must_use]
     pub fn pick(&self, x: f64, y: f64, size: u32, radius: f64) -> Option<Vec<u32>> {
-        let view = self.view();
-        let mut best: Option<(f64, usize, usize)> = None;
-        for (ci, c) in self.curves.iter().enumerate() {
-            for (pi, tips) in marker_positions(c).into_iter().enumerate() {
-                for p in tips {
-                    let [px, py, depth] = view.project(p, size);
-                    let d = (px - x).hypot(py - y);
-                    if depth >= -1e-9 && d <= radius && best.is_none_or(|b| d < b.0) {
-                        best = Some((d, ci, pi));
-                    }
-                }
-            }
-        }
-        best.map(|(_, c, p)| {
-            vec![
-                u32::try_from(c).unwrap_or(u32::MAX),
-                u32::try_from(p).unwrap_or(u32::MAX),
-            ]
-        })
+        let (c, p) = self.cam().pick(self.doc.curves(), [x, y], size, radius)?;
+        Some(vec![
+            u32::try_from(c).unwrap_or(u32::MAX),
+            u32::try_from(p).unwrap_or(u32::MAX),
+        ])
     }
 
     /// Moves S² (or S¹) point `index` to the sphere point drawn at pixel `(x, y)`.
@@ -615,8 +544,8 @@ impl Playground {
         y: f64,
         size: u32,
     ) -> Result<(), JsError> {
-        let p = self.view().unproject(x, y, size);
-        let coords = self.screen_coords(p);
+        let p = self.cam().unproject(x, y, size);
+        let coords = self.sphere_coords(p);
         self.set_point(curve, index, &coords)
     }
 
@@ -627,22 +556,22 @@ impl Playground {
     ///
     /// As [`Playground::set_point`].
     pub fn add_point_at(&mut self, curve: usize, x: f64, y: f64, size: u32) -> Result<(), JsError> {
-        let target = self.view().unproject(x, y, size);
-        let coords = if self.scene.space == Space::S3 {
-            let spec = self
-                .scene
-                .curves
-                .get(curve)
-                .ok_or(InputError::NoCurve(curve))?;
-            let last = spec.points.last().ok_or(InputError::NoPoint(0))?;
-            let key = input::quat(last)?;
-            let turn = DQuat::from_rotation_arc(key.rotate(DVec3::Z), target);
-            let q = UnitQuat::try_new(turn * key.as_dquat()).map_err(js)?;
+        let target = self.cam().unproject(x, y, size);
+        let spec = self
+            .doc
+            .scene()
+            .curves
+            .get(curve)
+            .ok_or(InputError::NoCurve(curve))?;
+        let count = spec.points.len();
+        let coords = if self.doc.scene().space == Space::S3 {
+            let last = spec.points.last().map_or(&[][..], Vec::as_slice);
+            let key = quat(last)?;
+            let q = turn_towards(key, key.rotate(DVec3::Z), target).map_err(js)?;
             q.to_wxyz().to_vec()
         } else {
-            self.screen_coords(target)
+            self.sphere_coords(target)
         };
-        let count = self.scene.curves.get(curve).map_or(0, |c| c.points.len());
         self.insert_point(curve, count, &coords)
     }
 
@@ -664,11 +593,10 @@ impl Playground {
         y1: f64,
         size: u32,
     ) -> Result<(), JsError> {
-        let view = self.view();
-        let key = input::quat(key0)?;
-        let (a, b) = (view.unproject(x0, y0, size), view.unproject(x1, y1, size));
-        let turn = DQuat::from_rotation_arc(a, b);
-        let q = UnitQuat::try_new(turn * key.as_dquat()).map_err(js)?;
+        let q = self
+            .cam()
+            .turn_key(quat(key0)?, [x0, y0], [x1, y1], size)
+            .map_err(js)?;
         self.set_point(curve, index, &q.to_wxyz())
     }
 
@@ -678,20 +606,20 @@ impl Playground {
     ///
     /// # Errors
     ///
-    /// An [`InputError`] for a bad curve.
+    /// For a curve that does not exist.
     pub fn eval(&self, curve: usize, u: f64) -> Result<Vec<f64>, JsError> {
-        let c = self.curves.get(curve).ok_or(InputError::NoCurve(curve))?;
-        let at = |[t0, t1]: [f64; 2]| t0 + (t1 - t0) * u.clamp(0.0, 1.0);
+        let c = self
+            .doc
+            .curves()
+            .get(curve)
+            .ok_or(InputError::NoCurve(curve))?;
+        let [t0, t1] = c.domain();
+        let t = t0 + (t1 - t0) * u.clamp(0.0, 1.0);
         Ok(match c {
-            BuiltCurve::S2(b) => b
-                .curve
-                .eval(at(b.curve.domain()))
-                .as_dvec3()
-                .to_array()
-                .to_vec(),
-            BuiltCurve::Sn(b) => b.curve.eval(at(b.curve.domain())).coords().to_vec(),
+            BuiltCurve::S2(b) => b.curve.eval(t).as_dvec3().to_array().to_vec(),
+            BuiltCurve::Sn(b) => b.curve.eval(t).coords().to_vec(),
             BuiltCurve::S3(b) => {
-                let q = b.curve.eval(at(b.curve.domain()));
+                let q = b.curve.eval(t);
                 let mut out = q.to_wxyz().to_vec();
                 for axis in [DVec3::X, DVec3::Y, DVec3::Z] {
                     out.extend(q.rotate(axis).to_array());
@@ -704,7 +632,10 @@ impl Playground {
     /// The scene's samples, as [`sample`].
     #[must_use]
     pub fn sample(&self, deriv: bool) -> String {
-        self.scene.sample_json(&self.curves, deriv).to_string()
+        self.doc
+            .scene()
+            .sample_json(self.doc.curves(), deriv)
+            .to_string()
     }
 
     /// One field of curve `curve`'s samples, as [`sample_array`], from the curves already built.
@@ -713,13 +644,13 @@ impl Playground {
     ///
     /// An [`InputError`] for an unknown field or curve.
     pub fn sample_array(&self, curve: usize, field: &str) -> Result<Vec<f64>, JsError> {
-        field_of(&self.scene, &self.curves, curve, field).map_err(Into::into)
+        field_of(self.doc.scene(), self.doc.curves(), curve, field).map_err(Into::into)
     }
 
     /// The continuity report, as [`continuity`].
     #[must_use]
     pub fn continuity(&self) -> String {
-        continuity_json(&self.curves).to_string()
+        report(self.doc.curves()).to_string()
     }
 
     /// Renders the built curves into the handle's frame (`size` wide) without rebuilding.
@@ -729,7 +660,7 @@ impl Playground {
     ///
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
-        let pixmap = render_built(&self.scene, &self.curves, size).map_err(js)?;
+        let pixmap = render_built(self.doc.scene(), self.doc.curves(), size).map_err(js)?;
         let h = pixmap.height();
         self.width = pixmap.width();
         self.rgba = straight_rgba(pixmap);
@@ -773,224 +704,18 @@ impl Playground {
 }
 
 impl Playground {
-    fn view(&self) -> View {
+    fn cam(&self) -> Camera {
         // The scene's view was checked when it was set.
-        view_of(&self.scene, &self.curves).unwrap_or_else(|_| fallback_view())
+        camera_of(self.doc.scene(), self.doc.curves()).unwrap_or(Camera {
+            orientation: UnitQuat::IDENTITY,
+        })
     }
 
     /// Sphere coordinates of a point of ℝ³ in the scene's space (S¹ drops z).
-    fn screen_coords(&self, p: DVec3) -> Vec<f64> {
-        match self.scene.space {
+    fn sphere_coords(&self, p: DVec3) -> Vec<f64> {
+        match self.doc.scene().space {
             Space::Sn(1) => vec![p.x, p.y],
             _ => p.to_array().to_vec(),
         }
-    }
-
-    fn curve_doc(&self, curve: usize) -> Result<&Map<String, Value>, InputError> {
-        match self.doc.get("curves") {
-            Some(Value::Array(list)) => list
-                .get(curve)
-                .and_then(Value::as_object)
-                .ok_or(InputError::NoCurve(curve)),
-            _ if curve == 0 => Ok(&self.doc),
-            _ => Err(InputError::NoCurve(curve)),
-        }
-    }
-
-    fn edit_points(
-        &mut self,
-        curve: usize,
-        edit: impl FnOnce(&mut Vec<Value>) -> Result<Option<PointEdit>, InputError>,
-    ) -> Result<(), JsError> {
-        let mut doc = self.doc.clone();
-        let c = curve_doc_mut(&mut doc, curve)?;
-        let (count, change) = match c.get_mut("points") {
-            Some(Value::Array(points)) => (points.len(), edit(points)?),
-            _ => return Err(InputError::NoCurve(curve).into()),
-        };
-        if let Some(change) = change {
-            input::follow_points(c, count, change);
-        }
-        self.apply(doc)
-    }
-
-    /// Validates an edited document and rebuilds the curves whose description changed.
-    ///
-    /// A curve whose JSON is unchanged keeps its built curve and its parsed description (the
-    /// document goes back through text, and `serde_json`'s default parser does not always read
-    /// back the exact double it wrote, so re-parsing could move an untouched point by an ulp).
-    fn apply(&mut self, doc: Map<String, Value>) -> Result<(), JsError> {
-        let text = Value::Object(doc.clone()).to_string();
-        let mut scene = Scene::from_json(&text).map_err(js)?;
-        let same_space = scene.space == self.scene.space;
-        let mut fresh: Vec<Option<BuiltCurve>> = Vec::with_capacity(scene.curves.len());
-        for i in 0..scene.curves.len() {
-            let unchanged = same_space
-                && i < self.scene.curves.len()
-                && curve_fields(&doc, i) == curve_fields(&self.doc, i);
-            if unchanged {
-                scene.curves[i] = self.scene.curves[i].clone();
-                fresh.push(None);
-            } else {
-                fresh.push(Some(build_one(&scene, i).map_err(js)?));
-            }
-        }
-        // The view's options do not depend on the curves (only its default camera does).
-        View::from_json(
-            scene.view.as_ref(),
-            scene.space == Space::S3,
-            None,
-            scene.curves.len() > 1,
-        )
-        .map_err(js)?;
-        let built = fresh.iter().filter(|c| c.is_some()).count();
-        let mut old: Vec<Option<BuiltCurve>> = core::mem::take(&mut self.curves)
-            .into_iter()
-            .map(Some)
-            .collect();
-        // Every `None` in `fresh` is an unchanged curve, so `old` has it.
-        let curves: Vec<BuiltCurve> = fresh
-            .into_iter()
-            .enumerate()
-            .filter_map(|(i, c)| c.or_else(|| old.get_mut(i).and_then(Option::take)))
-            .collect();
-        self.builds = self
-            .builds
-            .saturating_add(u32::try_from(built).unwrap_or(u32::MAX));
-        self.curves = curves;
-        self.scene = scene;
-        self.doc = doc;
-        Ok(())
-    }
-}
-
-/// A view for the case that cannot happen (every scene's view is checked when it is set).
-fn fallback_view() -> View {
-    View {
-        camera: UnitQuat::IDENTITY,
-        plot: spherekit_render::Plot::None,
-        frames: 0,
-        accuracy: spherekit_render::DEFAULT_ACCURACY,
-        axes: vec![0, 1, 2],
-    }
-}
-
-/// Builds curve `i` of `scene` alone, with the error message [`Scene::build`] would give.
-fn build_one(scene: &Scene, i: usize) -> Result<BuiltCurve, SceneError> {
-    let mut one = scene.clone();
-    one.curves = scene.curves.get(i).cloned().into_iter().collect();
-    let mut built = one.build().map_err(|e| match e {
-        SceneError::InCurve { error, .. } => SceneError::InCurve { index: i, error },
-        e => e,
-    })?;
-    built
-        .pop()
-        .ok_or_else(|| SceneError::Json("missing field `points`".into()))
-}
-
-/// Where each input point of a curve is drawn: the point (S², S¹) or the tips of the key's
-/// rotated body axes (S³).
-fn marker_positions(c: &BuiltCurve) -> Vec<Vec<DVec3>> {
-    match c {
-        BuiltCurve::S2(b) => b.inputs.iter().map(|p| vec![p.as_dvec3()]).collect(),
-        BuiltCurve::Sn(b) => b
-            .inputs
-            .iter()
-            .map(|p| vec![DVec3::new(p.coords()[0], p.coords()[1], 0.0)])
-            .collect(),
-        BuiltCurve::S3(b) => b
-            .inputs
-            .iter()
-            .map(|q| [DVec3::X, DVec3::Y, DVec3::Z].map(|a| q.rotate(a)).to_vec())
-            .collect(),
-    }
-}
-
-fn parse_doc(text: &str) -> Result<Map<String, Value>, SceneError> {
-    // Scene::from_json gives the CLI's message for text that is not a scene object.
-    match serde_json::from_str(text) {
-        Ok(Value::Object(m)) => Ok(m),
-        _ => Err(Scene::from_json(text)
-            .err()
-            .unwrap_or_else(|| SceneError::Json("expected a JSON object".into()))),
-    }
-}
-
-fn curve_doc_mut(
-    doc: &mut Map<String, Value>,
-    curve: usize,
-) -> Result<&mut Map<String, Value>, InputError> {
-    if doc.contains_key("curves") {
-        return match doc.get_mut("curves") {
-            Some(Value::Array(list)) => list
-                .get_mut(curve)
-                .and_then(Value::as_object_mut)
-                .ok_or(InputError::NoCurve(curve)),
-            _ => Err(InputError::NoCurve(curve)),
-        };
-    }
-    if curve == 0 {
-        Ok(doc)
-    } else {
-        Err(InputError::NoCurve(curve))
-    }
-}
-
-/// The description of curve `i` in a document (the curve's own fields, wherever they sit).
-fn curve_fields(doc: &Map<String, Value>, i: usize) -> Option<Map<String, Value>> {
-    let c = match doc.get("curves") {
-        Some(Value::Array(list)) => list.get(i)?.as_object()?,
-        _ if i == 0 => doc,
-        _ => return None,
-    };
-    Some(
-        CURVE_FIELDS
-            .iter()
-            .filter_map(|k| c.get(*k).map(|v| ((*k).to_owned(), v.clone())))
-            .collect(),
-    )
-}
-
-/// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 6] = [
-    "method",
-    "points",
-    "knots",
-    "params",
-    "canonicalize",
-    "color",
-];
-
-/// Turns a single-curve document into a `curves` list and returns the list.
-fn to_list(doc: &mut Map<String, Value>) -> Result<&mut Vec<Value>, InputError> {
-    if !doc.contains_key("curves") {
-        let mut one = Map::new();
-        for k in CURVE_FIELDS {
-            if let Some(v) = doc.remove(k) {
-                one.insert(k.into(), v);
-            }
-        }
-        doc.insert("curves".into(), Value::Array(vec![Value::Object(one)]));
-    }
-    match doc.get_mut("curves") {
-        Some(Value::Array(list)) => Ok(list),
-        _ => Err(InputError::NoCurve(0)),
-    }
-}
-
-/// Delegates [`Curve`] to a boxed curve, for functions generic over sized curves.
-#[derive(Debug)]
-struct Dyn<'a, P: Manifold>(&'a dyn Curve<Point = P>);
-
-impl<P: Manifold> Curve for Dyn<'_, P> {
-    type Point = P;
-    fn domain(&self) -> [f64; 2] {
-        self.0.domain()
-    }
-    fn joints(&self) -> &[f64] {
-        self.0.joints()
-    }
-    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
-        self.0.jet_at(t, side)
     }
 }

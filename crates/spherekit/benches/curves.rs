@@ -7,8 +7,8 @@
 #![allow(dead_code, reason = "each user takes a subset")]
 
 use spherekit::{
-    ArcBlend, BetaParams, BetaSpline, Bezier, CatmullRom, CornerBlend, CornerBlendS3, Curve,
-    DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline, KimBezier, LastEdge,
+    ArcBlend, BetaParams, BetaSpline, Bezier, BezierKim, BsplineKim, CatmullRom, CornerBlend,
+    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
     NlerpSpline, S2Point, Squad, UnitQuat,
 };
 
@@ -57,12 +57,12 @@ pub(crate) const METHODS: &[Method] = &[
     Method {
         name: "bezier-kim",
         slerps: 3,
-        build: |k| Box::new(KimBezier::try_new(k[..4].to_vec()).expect("bezier-kim")),
+        build: |k| Box::new(BezierKim::try_new(k[..4].to_vec()).expect("bezier-kim")),
     },
     Method {
         name: "bspline-kim",
         slerps: 3,
-        build: |k| Box::new(KimBSpline::try_new(k).expect("bspline-kim")),
+        build: |k| Box::new(BsplineKim::try_new(k).expect("bspline-kim")),
     },
     Method {
         name: "gamma",

@@ -47,6 +47,67 @@ impl JointContinuity {
     }
 }
 
+/// How smooth a curve is at a joint, as [`JointContinuity::class`] reads it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContinuityClass {
+    /// The one-sided points differ.
+    Broken,
+    /// Continuous, with a corner.
+    C0,
+    /// Continuous with a continuous direction, the speed jumps (geometric continuity).
+    G1,
+    /// `Cᵏ`, k ≥ 1: derivatives up to order k agree.
+    C(usize),
+}
+
+impl core::fmt::Display for ContinuityClass {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+        match *self {
+            Self::Broken => f.write_str("broken"),
+            Self::C0 => f.write_str("C⁰"),
+            Self::G1 => f.write_str("G¹"),
+            Self::C(k) => {
+                f.write_str("C")?;
+                let digits: Vec<char> = k
+                    .to_string()
+                    .bytes()
+                    .map(|b| DIGITS[usize::from(b - b'0')])
+                    .collect();
+                f.write_str(&digits.into_iter().collect::<String>())
+            }
+        }
+    }
+}
+
+impl JointContinuity {
+    /// The continuity class at tolerance `tol`: [`ContinuityClass::Broken`], `C0`, `G1`,
+    /// `C(1)` or `C(2)` from the measured jumps; where they show C² and the construction
+    /// guarantees a higher order `guaranteed` (Pobegailo's Cⁿ blends), `C(guaranteed)`. The
+    /// jets carry two derivatives, so orders above 2 are the construction's theorem, checked
+    /// to order 2 here.
+    ///
+    /// ```
+    /// use spherekit::{ContinuityClass, JointContinuity};
+    ///
+    /// let j = JointContinuity { t: 1.0, c0: 0.0, c1: 0.0, c2: 1e-13, g1: 0.0 };
+    /// assert_eq!(j.class(1e-9, 0), ContinuityClass::C(2));
+    /// assert_eq!(j.class(1e-9, 6).to_string(), "C⁶");
+    /// let g1 = JointContinuity { t: 1.0, c0: 0.0, c1: 0.3, c2: 0.1, g1: 1e-14 };
+    /// assert_eq!(g1.class(1e-9, 6).to_string(), "G¹");
+    /// ```
+    #[must_use]
+    pub fn class(&self, tol: f64, guaranteed: usize) -> ContinuityClass {
+        match self.order(tol) {
+            None => ContinuityClass::Broken,
+            Some(0) if self.g1 <= tol => ContinuityClass::G1,
+            Some(0) => ContinuityClass::C0,
+            Some(1) => ContinuityClass::C(1),
+            Some(_) => ContinuityClass::C(guaranteed.max(2)),
+        }
+    }
+}
+
 /// The jumps of point, velocity and acceleration at every interior joint of `curve` (the
 /// entries of [`Curve::joints`] other than the two ends), from [`Curve::jet_at`] on both sides.
 ///

@@ -1,8 +1,9 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Typed errors. Messages name the offending input by the scene field it comes from
-//! (`points[3]`, `knots[2]`), so the CLI and the browser can show them unchanged.
+//! Typed errors. Messages say what is wrong in the library's terms (point 3, knot 2); a front
+//! end that reads points from a document (the scene format) says where, from the indices the
+//! variants carry.
 
 use core::fmt;
 
@@ -23,15 +24,34 @@ pub enum PointError {
     },
 }
 
-impl fmt::Display for PointError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl PointError {
+    /// What is wrong, as the predicate of a sentence whose subject the caller names (`"has
+    /// zero length and cannot be normalised"`): `format!("points[3] {}", e.predicate())`.
+    ///
+    /// ```
+    /// use spherekit::{PointError, S2Point};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let e = S2Point::try_new(DVec3::ZERO).unwrap_err();
+    /// assert_eq!(e, PointError::ZeroLength);
+    /// assert_eq!(e.to_string(), "the vector has zero length and cannot be normalised");
+    /// assert_eq!(e.predicate(), "has zero length and cannot be normalised");
+    /// ```
+    #[must_use]
+    pub fn predicate(&self) -> String {
         match self {
-            Self::NonFinite => f.write_str("has a non-finite coordinate"),
-            Self::ZeroLength => f.write_str("has zero length and cannot be normalised"),
+            Self::NonFinite => "has a non-finite coordinate".into(),
+            Self::ZeroLength => "has zero length and cannot be normalised".into(),
             Self::WrongDimension { expected, got } => {
-                write!(f, "has {got} coordinates, expected {expected}")
+                format!("has {got} coordinates, expected {expected}")
             }
         }
+    }
+}
+
+impl fmt::Display for PointError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "the vector {}", self.predicate())
     }
 }
 
@@ -111,47 +131,46 @@ impl fmt::Display for SplineError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::TooFewPoints { min, got } => {
-                write!(
-                    f,
-                    "points: this method needs at least {min} points, got {got}"
-                )
+                write!(f, "this method needs at least {min} points, got {got}")
             }
-            Self::InvalidPoint { index, reason } => write!(f, "points[{index}] {reason}"),
+            Self::InvalidPoint { index, reason } => {
+                write!(f, "point {index} {}", reason.predicate())
+            }
             Self::Antipodal { index } => write!(
                 f,
-                "points[{index}] and points[{}] are antipodal: the geodesic between them is not unique",
+                "points {index} and {} are antipodal: the geodesic between them is not unique (for quaternions, q and −q are the same rotation: unflip the keys)",
                 index + 1
             ),
             Self::Coincident { index } => write!(
                 f,
-                "points[{index}] and points[{}] coincide: this method needs distinct consecutive points",
+                "points {index} and {} coincide: this method needs distinct consecutive points",
                 index + 1
             ),
-            Self::InvalidKnot { index } => write!(f, "knots[{index}] is not finite"),
+            Self::InvalidKnot { index } => write!(f, "knot {index} is not finite"),
             Self::KnotsNotIncreasing { index } => write!(
                 f,
-                "knots[{index}] is not greater than knots[{}]: knots must be strictly increasing",
+                "knot {index} is not greater than knot {}: knots must be strictly increasing",
                 index.saturating_sub(1)
             ),
             Self::KnotSpacing { index } => write!(
                 f,
-                "knots[{index}] − knots[{}] must be from {:e} to {:e}: derivatives would overflow",
+                "the spacing of knots {} and {index} must be from {:e} to {:e}: derivatives would overflow",
                 index.saturating_sub(1),
                 crate::MIN_KNOT_SPACING,
                 crate::MAX_KNOT_SPACING
             ),
             Self::KnotCount { expected, got } => {
-                write!(f, "knots: expected {expected} knots, got {got}")
+                write!(f, "expected {expected} knots, got {got}")
             }
-            Self::InvalidParameter { name, reason } => write!(f, "params.{name}: {reason}"),
+            Self::InvalidParameter { name, reason } => write!(f, "parameter {name}: {reason}"),
             Self::NoCircle { index } => write!(
                 f,
-                "points[{index}] and points[{}] coincide: no unique circle passes through points[{index}], points[{}] and points[{}]",
+                "points {index} and {} coincide: no unique circle passes through points {index}, {} and {}",
                 index + 2,
                 index + 1,
                 index + 2
             ),
-            Self::Solve(e) => write!(f, "params.solver: {e}"),
+            Self::Solve(e) => write!(f, "{e}"),
         }
     }
 }

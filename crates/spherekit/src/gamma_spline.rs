@@ -115,7 +115,7 @@ pub struct GammaJoint {
 ///        u ∈ [uᵢ₋₁, uᵢ], τ = (u − uᵢ₋₁)/Δᵢ₋₁,  ωₖ = log(bₖ₋₁⁻¹ bₖ)
 /// ```
 ///
-/// Each segment is Kim's cubic cumulative Bézier quaternion curve ([`KimBezier`](crate::KimBezier))
+/// Each segment is Kim's cubic cumulative Bézier quaternion curve ([`BezierKim`](crate::BezierKim))
 /// on `b₃ᵢ₋₃ … b₃ᵢ`; derivatives are exact. `S(u₀) = d₀`, `S(uᵢ) = b₃ᵢ`, `S(uₗ) = dₗ₊₂`.
 ///
 /// # Continuity

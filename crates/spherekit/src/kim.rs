@@ -251,13 +251,13 @@ const STACK_DEGREE: usize = 16;
 /// # Examples
 ///
 /// ```
-/// use spherekit::{glam::DVec3, Curve, KimBezier, Manifold, UnitQuat};
+/// use spherekit::{glam::DVec3, Curve, BezierKim, Manifold, UnitQuat};
 ///
 /// let q0 = UnitQuat::IDENTITY;
 /// let q1 = UnitQuat::from_axis_angle(DVec3::X, 1.0).unwrap();
 /// let q2 = UnitQuat::from_axis_angle(DVec3::Y, 1.0).unwrap();
 /// let q3 = UnitQuat::from_axis_angle(DVec3::Z, 1.0).unwrap();
-/// let c = KimBezier::try_new(vec![q0, q1, q2, q3]).unwrap();
+/// let c = BezierKim::try_new(vec![q0, q1, q2, q3]).unwrap();
 /// assert_eq!(c.domain(), [0.0, 1.0]);
 /// assert!(c.eval(1.0).dist(&q3) < 1e-15);
 /// // q′(0) = n·q₀·ω₁ with ω₁ = log(q₀⁻¹ q₁) = (0.5, 0, 0).
@@ -265,14 +265,14 @@ const STACK_DEGREE: usize = 16;
 /// assert!((v - 3.0 * 0.5 * spherekit::glam::DVec4::X).length() < 1e-14);
 /// ```
 #[derive(Clone, Debug)]
-pub struct KimBezier {
+pub struct BezierKim {
     controls: Vec<UnitQuat>,
     omegas: Vec<DVec3>,
     rates: Vec<Rate>,
     knots: Knots,
 }
 
-impl KimBezier {
+impl BezierKim {
     /// Builds the curve of degree `controls.len() − 1` on `[0, 1]`.
     ///
     /// # Errors
@@ -363,7 +363,7 @@ impl KimBezier {
     }
 }
 
-impl Curve for KimBezier {
+impl Curve for BezierKim {
     type Point = UnitQuat;
 
     fn domain(&self) -> [f64; 2] {
@@ -415,10 +415,10 @@ impl Curve for KimBezier {
 /// # Examples
 ///
 /// ```
-/// use spherekit::{glam::DVec3, Curve, KimBSpline, Manifold, Side, UnitQuat};
+/// use spherekit::{glam::DVec3, Curve, BsplineKim, Manifold, Side, UnitQuat};
 ///
 /// let q = |a: f64| UnitQuat::from_axis_angle(DVec3::Z, a).unwrap();
-/// let c = KimBSpline::try_new(vec![q(0.0), q(0.4), q(1.0), q(1.2), q(2.0)]).unwrap();
+/// let c = BsplineKim::try_new(vec![q(0.0), q(0.4), q(1.0), q(1.2), q(2.0)]).unwrap();
 /// assert_eq!(c.domain(), [0.0, 2.0]);
 /// // C² at the joint t = 1.
 /// let (l, r) = (c.jet_at(1.0, Side::Left), c.jet_at(1.0, Side::Right));
@@ -429,14 +429,14 @@ impl Curve for KimBezier {
 /// assert!(c.eval(0.0).dist(&q(2.6 / 6.0)) < 1e-15);
 /// ```
 #[derive(Clone, Debug)]
-pub struct KimBSpline {
+pub struct BsplineKim {
     controls: Vec<UnitQuat>,
     omegas: Vec<DVec3>,
     rates: Vec<Rate>,
     knots: Knots,
 }
 
-impl KimBSpline {
+impl BsplineKim {
     /// Builds the curve on `[0, n − 2]` from `n + 1 ≥ 4` controls.
     ///
     /// # Errors
@@ -474,7 +474,7 @@ impl KimBSpline {
     }
 }
 
-impl Curve for KimBSpline {
+impl Curve for BsplineKim {
     type Point = UnitQuat;
 
     fn domain(&self) -> [f64; 2] {
@@ -506,7 +506,7 @@ impl Curve for KimBSpline {
     }
 }
 
-impl KimBSpline {
+impl BsplineKim {
     fn jet_local(&self, i: usize, s: f64) -> Jet<UnitQuat> {
         let [b1, b2, b3] = cubic_bspline_basis(s);
         let factors = [

@@ -32,8 +32,8 @@
 //! | [`GeodesicSpline`] | all | piecewise slerp through the points | C⁰ |
 //! | [`NlerpSpline`] | all | piecewise normalised linear interpolation | C⁰ |
 //! | [`Bezier`] | all | spherical Bézier of any degree by de Casteljau (Shoemake 1985) | C^∞ |
-//! | [`KimBezier`] | S³ | Kim–Kim–Shin cumulative Bézier quaternion curve (1995) | C^∞ |
-//! | [`KimBSpline`] | S³ | Kim–Kim–Shin cumulative cubic B-spline quaternion curve | C² |
+//! | [`BezierKim`] | S³ | Kim–Kim–Shin cumulative Bézier quaternion curve (1995) | C^∞ |
+//! | [`BsplineKim`] | S³ | Kim–Kim–Shin cumulative cubic B-spline quaternion curve | C² |
 //! | [`Squad`] | S³ | Shoemake's squad, non-uniform knots | C¹ |
 //! | [`CatmullRom`] | all | Catmull-Rom by slerps (textbook rule on S³, intrinsic on S^m) | C¹ |
 //! | [`GammaSpline`] | S³ | Boehm's Gamma spline lifted to S³ with Kim's cubic segments | C¹ |
@@ -82,7 +82,6 @@
 //! - `libm`: route every transcendental function through the `libm` crate, so that native and
 //!   WebAssembly builds give bit-identical results. Enable it in binaries that render.
 //! - `serde`: `Serialize` for points.
-//! - `scene`: the JSON scene format (module `scene`) shared by the CLI, the browser and the tests.
 
 #![cfg_attr(docsrs, feature(doc_auto_cfg))]
 
@@ -109,8 +108,6 @@ mod math;
 mod rotation;
 mod s2;
 mod s3;
-#[cfg(feature = "scene")]
-pub mod scene;
 mod slerp_jet;
 mod smoothing;
 mod sn;
@@ -124,13 +121,13 @@ pub use beta_spline::{
 pub use bezier::{Bezier, CubicSegment, cubic_jet, de_casteljau, de_casteljau_jet};
 pub use catmull_rom::CatmullRom;
 pub use circle::CircleArc;
-pub use continuity::{JointContinuity, continuity};
+pub use continuity::{ContinuityClass, JointContinuity, continuity};
 pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SolveError, SplineError};
 pub use gamma_spline::{GammaJoint, GammaSpline, Gammas, LastEdge};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
-pub use kim::{KimBSpline, KimBezier};
+pub use kim::{BezierKim, BsplineKim};
 pub use knots::{Knots, MAX_KNOT_SPACING, MIN_KNOT_SPACING};
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use rotation::{

@@ -15,9 +15,9 @@ mod data;
 
 use spherekit::glam::{DVec3, DVec4};
 use spherekit::{
-    ArcBlend, BetaParams, BetaSolver, BetaSpline, Bezier, CatmullRom, CornerBlend, CornerBlendS3,
-    Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, Jet, KimBSpline,
-    KimBezier, LastEdge, Manifold, NlerpSpline, S2Point, Squad, UnitQuat,
+    ArcBlend, BetaParams, BetaSolver, BetaSpline, Bezier, BezierKim, BsplineKim, CatmullRom,
+    CornerBlend, CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas,
+    GeodesicSpline, Jet, LastEdge, Manifold, NlerpSpline, S2Point, Squad, UnitQuat,
 };
 
 type Boxed<P> = Box<dyn Curve<Point = P>>;
@@ -103,11 +103,11 @@ fn s3_curves() -> Vec<(&'static str, Boxed<UnitQuat>)> {
         ),
         (
             "bezier-kim",
-            Box::new(KimBezier::try_new(q[..4].to_vec()).unwrap()),
+            Box::new(BezierKim::try_new(q[..4].to_vec()).unwrap()),
         ),
         (
             "bspline-kim",
-            Box::new(KimBSpline::try_new(q.clone()).unwrap()),
+            Box::new(BsplineKim::try_new(q.clone()).unwrap()),
         ),
         (
             "gamma",

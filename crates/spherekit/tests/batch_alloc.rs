@@ -18,8 +18,8 @@ mod data;
 use std::alloc::System;
 
 use spherekit::{
-    ArcBlend, BetaParams, BetaSpline, Bezier, CatmullRom, CornerBlend, CornerBlendS3, Curve,
-    DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline, KimBezier, LastEdge,
+    ArcBlend, BetaParams, BetaSpline, Bezier, BezierKim, BsplineKim, CatmullRom, CornerBlend,
+    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
     Manifold, NlerpSpline, S2Point, Squad, UnitQuat,
 };
 use stats_alloc::{INSTRUMENTED_SYSTEM, Region, StatsAlloc};
@@ -93,11 +93,11 @@ fn batch_evaluation_allocates_nothing() {
         ),
         (
             "bezier-kim",
-            Box::new(KimBezier::try_new(q[..4].to_vec()).unwrap()),
+            Box::new(BezierKim::try_new(q[..4].to_vec()).unwrap()),
         ),
         (
             "bspline-kim",
-            Box::new(KimBSpline::try_new(q.clone()).unwrap()),
+            Box::new(BsplineKim::try_new(q.clone()).unwrap()),
         ),
         (
             "gamma",
@@ -173,7 +173,7 @@ fn memory_is_linear_in_keys() {
         ),
         (
             "bspline-kim",
-            Box::new(|k| Box::new(KimBSpline::try_new(k).unwrap())),
+            Box::new(|k| Box::new(BsplineKim::try_new(k).unwrap())),
         ),
         (
             "gamma",

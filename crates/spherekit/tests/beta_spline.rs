@@ -901,9 +901,9 @@ fn bad_input_is_a_typed_error() {
         "max_iterations",
         "max_iterations"
     );
-    // Messages name the scene field.
+    // Messages name the parameter and the entry.
     let msg = err(with_beta1(vec![1.0, -2.0, 1.0, 1.0])).to_string();
-    assert!(msg.starts_with("params.beta1"), "{msg}");
+    assert!(msg.starts_with("parameter beta1"), "{msg}");
     assert!(msg.contains("[1]"), "{msg}");
     // Coincident consecutive data points.
     let dup = vec![
@@ -956,7 +956,7 @@ fn bad_input_is_a_typed_error() {
     let msg = BetaSpline::try_new(example1(), &limited)
         .unwrap_err()
         .to_string();
-    assert!(msg.starts_with("params.solver"), "{msg}");
+    assert!(msg.starts_with("the solver did not converge"), "{msg}");
 }
 
 #[test]

@@ -9,7 +9,7 @@ mod support;
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
-    Curve, GammaSpline, Gammas, KimBezier, LastEdge, Manifold, Side, SplineError, UnitQuat,
+    BezierKim, Curve, GammaSpline, Gammas, LastEdge, Manifold, Side, SplineError, UnitQuat,
 };
 use support::Rng;
 
@@ -282,7 +282,7 @@ fn endpoints_and_segments_are_kim_cubics() {
     assert_eq!(s.segment_count(), 4);
     assert_eq!(s.gamma().len(), 3);
     for i in 0..4 {
-        let seg = KimBezier::try_new(s.controls()[3 * i..=3 * i + 3].to_vec()).unwrap();
+        let seg = BezierKim::try_new(s.controls()[3 * i..=3 * i + 3].to_vec()).unwrap();
         let h = u[i + 1] - u[i];
         for k in 0..=10 {
             let tau = f64::from(k) / 10.0;
@@ -390,7 +390,7 @@ fn one_segment_is_kims_cubic_on_the_vertices() {
     let d = rng.chain(4, 1.5);
     let s = gamma(d.clone(), None, Gammas::Each(vec![]));
     assert_eq!(s.controls(), &d[..]);
-    let k = KimBezier::try_new(d).unwrap();
+    let k = BezierKim::try_new(d).unwrap();
     for i in 0..=10 {
         let t = f64::from(i) / 10.0;
         assert!(s.eval(t).dist(&k.eval(t)) < 1e-15, "t={t}");
@@ -470,7 +470,7 @@ fn bad_input_is_a_typed_error() {
             matches!(e, SplineError::InvalidParameter { name: "gamma", .. }),
             "{g:?}: {e}"
         );
-        assert!(e.to_string().starts_with("params.gamma: "), "{e}");
+        assert!(e.to_string().starts_with("parameter gamma: "), "{e}");
     }
     // A scalar γ is validated even when there are no interior knots.
     assert!(matches!(

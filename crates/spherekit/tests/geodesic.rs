@@ -237,7 +237,7 @@ fn bad_input_is_a_typed_error() {
     let e = SplineError::KnotsNotIncreasing { index: 2 };
     assert_eq!(
         e.to_string(),
-        "knots[2] is not greater than knots[1]: knots must be strictly increasing"
+        "knot 2 is not greater than knot 1: knots must be strictly increasing"
     );
 }
 

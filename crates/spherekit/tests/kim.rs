@@ -9,7 +9,7 @@ mod support;
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
-    Curve, KimBSpline, KimBezier, Manifold, Side, SplineError, UnitQuat,
+    BezierKim, BsplineKim, Curve, Manifold, Side, SplineError, UnitQuat,
     angular_velocity_acceleration,
 };
 use support::Rng;
@@ -63,7 +63,7 @@ fn bezier_interpolates_ends_with_end_derivatives() {
     let mut rng = Rng(0x1234_5678);
     for n in 1..=6 {
         let q = rng.chain(n + 1, 1.2);
-        let c = KimBezier::try_new(q.clone()).unwrap();
+        let c = BezierKim::try_new(q.clone()).unwrap();
         assert_eq!(c.degree(), n);
         assert_eq!(c.eval(0.0), q[0]);
         assert_eq!(c.eval(1.0), q[n]);
@@ -92,7 +92,7 @@ fn bezier_derivatives_match_finite_differences() {
     let mut rng = Rng(99);
     for n in [1, 2, 3, 4, 5, 7, 17, 20] {
         let q = rng.chain(n + 1, 1.5);
-        let c = KimBezier::try_new(q).unwrap();
+        let c = BezierKim::try_new(q).unwrap();
         check_derivatives(&c, &params(0.01, 0.99, 13));
     }
 }
@@ -101,7 +101,7 @@ fn bezier_derivatives_match_finite_differences() {
 fn bezier_degree_one_is_slerp() {
     let mut rng = Rng(7);
     let q = rng.chain(2, 2.5);
-    let c = KimBezier::try_new(q.clone()).unwrap();
+    let c = BezierKim::try_new(q.clone()).unwrap();
     for t in params(0.0, 1.0, 10) {
         assert!(c.eval(t).dist(&q[0].slerp(&q[1], t)) < 1e-15, "t={t}");
     }
@@ -122,7 +122,7 @@ fn bezier_equals_de_casteljau_on_a_great_circle() {
             .iter()
             .map(|&a| q0.mul(UnitQuat::exp(axis * a)))
             .collect();
-        let c = KimBezier::try_new(ctrl.clone()).unwrap();
+        let c = BezierKim::try_new(ctrl.clone()).unwrap();
         for t in params(0.0, 1.0, 20) {
             let k = c.eval(t);
             assert!(k.dist(&de_casteljau(&ctrl, t)) < 1e-14, "n={n} t={t}");
@@ -145,7 +145,7 @@ fn bezier_equals_de_casteljau_on_a_great_circle() {
 fn bezier_differs_from_de_casteljau_in_general() {
     let mut rng = Rng(5);
     let q = rng.chain(4, 1.5);
-    let c = KimBezier::try_new(q.clone()).unwrap();
+    let c = BezierKim::try_new(q.clone()).unwrap();
     let gap = params(0.0, 1.0, 20)
         .into_iter()
         .map(|t| c.eval(t).dist(&de_casteljau(&q, t)))
@@ -160,9 +160,9 @@ fn bezier_is_bi_invariant() {
     let mut rng = Rng(11);
     let q = rng.chain(5, 1.3);
     let (a, b) = (rng.quat(), rng.quat());
-    let c = KimBezier::try_new(q.clone()).unwrap();
-    let left = KimBezier::try_new(q.iter().map(|&x| a.mul(x)).collect()).unwrap();
-    let both = KimBezier::try_new(q.iter().map(|&x| a.mul(x).mul(b)).collect()).unwrap();
+    let c = BezierKim::try_new(q.clone()).unwrap();
+    let left = BezierKim::try_new(q.iter().map(|&x| a.mul(x)).collect()).unwrap();
+    let both = BezierKim::try_new(q.iter().map(|&x| a.mul(x).mul(b)).collect()).unwrap();
     for t in params(0.0, 1.0, 17) {
         let j = c.jet(t);
         let jl = left.jet(t);
@@ -191,7 +191,7 @@ fn bezier_near_identical_controls_are_finite() {
     let q1 = q0.mul(UnitQuat::exp(tiny));
     let q2 = q1;
     let q3 = q1.mul(UnitQuat::exp(DVec3::new(0.0, 0.0, 1e-12)));
-    let c = KimBezier::try_new(vec![q0, q1, q2, q3]).unwrap();
+    let c = BezierKim::try_new(vec![q0, q1, q2, q3]).unwrap();
     for t in params(0.0, 1.0, 10) {
         let j = c.jet(t);
         assert!(
@@ -212,7 +212,7 @@ fn bezier_near_identical_controls_are_finite() {
 fn bezier_near_antipodal_is_finite_and_antipodal_is_an_error() {
     let q0 = UnitQuat::from_wxyz([0.3, 0.5, -0.2, 0.7]).unwrap();
     let near = q0.neg().mul(UnitQuat::exp(DVec3::new(1e-7, 0.0, 0.0)));
-    let c = KimBezier::try_new(vec![q0, near, q0]).unwrap();
+    let c = BezierKim::try_new(vec![q0, near, q0]).unwrap();
     for t in params(0.0, 1.0, 10) {
         let j = c.jet(t);
         assert!(
@@ -221,11 +221,11 @@ fn bezier_near_antipodal_is_finite_and_antipodal_is_an_error() {
         );
     }
     assert_eq!(
-        KimBezier::try_new(vec![q0, q0, q0.neg()]).unwrap_err(),
+        BezierKim::try_new(vec![q0, q0, q0.neg()]).unwrap_err(),
         SplineError::Antipodal { index: 1 }
     );
     assert_eq!(
-        KimBezier::try_new(vec![q0]).unwrap_err(),
+        BezierKim::try_new(vec![q0]).unwrap_err(),
         SplineError::TooFewPoints { min: 2, got: 1 }
     );
 }
@@ -233,7 +233,7 @@ fn bezier_near_antipodal_is_finite_and_antipodal_is_an_error() {
 #[test]
 fn bezier_clamps_outside_the_domain() {
     let mut rng = Rng(3);
-    let c = KimBezier::try_new(rng.chain(4, 1.0)).unwrap();
+    let c = BezierKim::try_new(rng.chain(4, 1.0)).unwrap();
     assert_eq!(c.eval(-1.0), c.eval(0.0));
     assert_eq!(c.eval(2.0), c.eval(1.0));
     assert_eq!(c.joints(), &[0.0, 1.0]);
@@ -243,7 +243,7 @@ fn bezier_clamps_outside_the_domain() {
 fn bspline_is_c2_at_joints() {
     let mut rng = Rng(77);
     let q = rng.chain(9, 2.0);
-    let c = KimBSpline::try_new(q).unwrap();
+    let c = BsplineKim::try_new(q).unwrap();
     assert_eq!(c.domain(), [0.0, 6.0]);
     assert_eq!(c.joints().len(), 7);
     for &u in &c.joints()[1..6] {
@@ -260,7 +260,7 @@ fn bspline_is_c2_at_joints() {
 #[test]
 fn bspline_derivatives_match_finite_differences() {
     let mut rng = Rng(2024);
-    let c = KimBSpline::try_new(rng.chain(7, 2.0)).unwrap();
+    let c = BsplineKim::try_new(rng.chain(7, 2.0)).unwrap();
     check_derivatives(&c, &params(0.01, 3.99, 29));
 }
 
@@ -269,7 +269,7 @@ fn bspline_on_one_axis_is_the_scalar_bspline() {
     let axis = DVec3::new(1.0, 2.0, -1.0).normalize();
     let alpha = [0.1, -0.4, 0.9, 1.7, 1.2, 2.5];
     let q: Vec<UnitQuat> = alpha.iter().map(|&a| UnitQuat::exp(axis * a)).collect();
-    let c = KimBSpline::try_new(q).unwrap();
+    let c = BsplineKim::try_new(q).unwrap();
     for t in params(0.0, 3.0, 30) {
         let i = [1.0, 2.0].iter().filter(|&&k| t >= k).count();
         let s = t - i as f64;
@@ -289,19 +289,19 @@ fn bspline_is_left_invariant_and_validates() {
     let mut rng = Rng(8);
     let q = rng.chain(6, 1.0);
     let r = rng.quat();
-    let c = KimBSpline::try_new(q.clone()).unwrap();
-    let rc = KimBSpline::try_new(q.iter().map(|&x| r.mul(x)).collect()).unwrap();
+    let c = BsplineKim::try_new(q.clone()).unwrap();
+    let rc = BsplineKim::try_new(q.iter().map(|&x| r.mul(x)).collect()).unwrap();
     for t in params(0.0, 3.0, 19) {
         assert!(rc.eval(t).dist(&r.mul(c.eval(t))) < 1e-14, "t={t}");
     }
     assert_eq!(
-        KimBSpline::try_new(q[..3].to_vec()).unwrap_err(),
+        BsplineKim::try_new(q[..3].to_vec()).unwrap_err(),
         SplineError::TooFewPoints { min: 4, got: 3 }
     );
     let mut bad = q;
     bad[3] = bad[2].neg();
     assert_eq!(
-        KimBSpline::try_new(bad).unwrap_err(),
+        BsplineKim::try_new(bad).unwrap_err(),
         SplineError::Antipodal { index: 2 }
     );
 }
@@ -311,7 +311,7 @@ fn angular_velocity_of_a_one_axis_bezier() {
     // Rotation about z by angle 2α(t) with α(t) = Σ Bᵢ αᵢ: ω = 2α′(t)·z, α_acc = 2α″(t)·z.
     let alpha = [0.0, 0.3, 0.5, 1.1];
     let q: Vec<UnitQuat> = alpha.iter().map(|&a| UnitQuat::exp(DVec3::Z * a)).collect();
-    let c = KimBezier::try_new(q).unwrap();
+    let c = BezierKim::try_new(q).unwrap();
     for t in params(0.0, 1.0, 8) {
         let u = 1.0 - t;
         let d1 = 3.0

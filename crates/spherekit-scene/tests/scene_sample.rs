@@ -3,10 +3,8 @@
 
 //! `BuiltCurve::sample_field` gives the numbers of `Scene::sample_json`, field by field.
 
-#![cfg(feature = "scene")]
-
 use serde_json::Value;
-use spherekit::scene::{SAMPLE_FIELDS, Scene};
+use spherekit_scene::{SAMPLE_FIELDS, Scene};
 
 /// A field of one curve's JSON samples, rows flattened.
 fn flattened(curve: &Value, field: &str) -> Vec<f64> {

@@ -497,7 +497,7 @@ fn render_writes_a_png_and_nothing_for_a_bad_scene() {
         "{}",
         String::from_utf8_lossy(&ok.stderr)
     );
-    let png = spherekit_snapshot::decode_png(&std::fs::read(&out).unwrap()).unwrap();
+    let png = spherekit_cli::decode_png(&std::fs::read(&out).unwrap()).unwrap();
     assert_eq!((png.width(), png.height()), (64, 64));
     std::fs::remove_file(&out).unwrap();
     let cases: &[(&str, &[&str], &str)] = &[

@@ -6,7 +6,7 @@
 //! ```text
 //! spherekit sample SCENE.json|- [--deriv] [--continuity] [--samples N]
 //! spherekit render SCENE.json|- -o OUT.png [--size N]
-//! spherekit methods
+//! spherekit methods [--json]
 //! ```
 //!
 //! Bad input exits with status 2 and one line on stderr naming the offending field.
@@ -14,7 +14,7 @@
 use std::io::{Read, Write};
 use std::process::ExitCode;
 
-use spherekit::scene::{Method, SampleOptions, Scene};
+use spherekit_scene::{METHODS, SampleOptions, Scene, registry_json};
 
 const USAGE: &str = "\
 usage: spherekit <command> [options]
@@ -25,13 +25,16 @@ commands:
       (`-` reads the scene from standard input).
       --deriv        also print velocity, acceleration (and angular velocity on S3)
       --continuity   also print the jumps of point, velocity and acceleration
-                     at every joint (c0, c1, c2; g1 of the unit tangent)
+                     at every joint (c0, c1, c2; g1 of the unit tangent) and
+                     its class (C⁰, G¹, C¹, C², … Cⁿ)
       --samples N    N uniform samples over the domain (overrides the scene)
   render SCENE.json -o OUT.png [--size N]
       Draw the scene (sphere, curves, speed plot) into a PNG, N pixels wide
       (default 512). No file is written when the scene is bad.
-  methods
-      List the curve methods and the spaces each supports.
+  methods [--json]
+      List the curve methods and the spaces each supports; with --json the
+      whole registry: knots, minimum points, parameters with type, range
+      and default.
   help
       Show this text.";
 
@@ -67,6 +70,10 @@ fn run(args: &[String]) -> Result<(), Failure> {
             methods();
             Ok(())
         }
+        Some("methods") if args.len() == 2 && args[1] == "--json" => {
+            println!("{}", registry_json());
+            Ok(())
+        }
         Some("help" | "--help" | "-h") => {
             println!("{USAGE}");
             Ok(())
@@ -84,13 +91,8 @@ fn run(args: &[String]) -> Result<(), Failure> {
 }
 
 fn methods() {
-    for m in Method::ALL {
-        println!(
-            "{:<14} {:<14} {}",
-            m.id(),
-            m.support().describe(),
-            m.summary()
-        );
+    for m in METHODS {
+        println!("{:<14} {:<14} {}", m.id, m.spheres.describe(), m.summary);
     }
 }
 
@@ -181,7 +183,7 @@ fn render(args: &[String]) -> Result<(), Failure> {
     let text = read_scene(&path)?;
     let scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
     let pixmap = spherekit_render::render(&scene, size).map_err(|e| bad(e.to_string()))?;
-    let png = spherekit_snapshot::encode_png(&pixmap).map_err(|e| Failure {
+    let png = spherekit_cli::encode_png(&pixmap).map_err(|e| Failure {
         status: 1,
         message: format!("cannot encode the PNG: {e}"),
     })?;

@@ -13,10 +13,11 @@
 )]
 
 use serde_json::{Map, Value, json};
-use spherekit::scene::{
-    Built, BuiltCurve, Method, SampleOptions, Sampling, Scene, ScenePoint, Space,
-};
 use spherekit::{Ambient, Side};
+use spherekit_scene::{
+    Built, BuiltCurve, KnotRule, METHODS, Method, ParamKind, SampleOptions, Sampling, Scene,
+    ScenePoint, Space,
+};
 
 use super::arb::{Result as ArbResult, Unstructured};
 
@@ -230,9 +231,11 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
         "S3" => 4,
         _ => 5,
     };
-    let methods: Vec<Method> = Method::ALL
-        .into_iter()
-        .filter(|m| space == "S3" || m.support().describe() != "S3")
+    let parsed = Space::parse(space).unwrap_or(Space::S2);
+    let methods: Vec<&'static Method> = METHODS
+        .iter()
+        .copied()
+        .filter(|m| m.spheres.contains(parsed))
         .collect();
     let method = pick(u, &methods)?;
     // Mostly enough points for every method (4); sometimes too few.
@@ -294,18 +297,15 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
     }
     let mut scene = Map::new();
     scene.insert("space".into(), json!(space));
-    scene.insert("method".into(), json!(method.id()));
+    scene.insert("method".into(), json!(method.id));
     scene.insert("points".into(), json!(points));
     if space == "S3" && u.ratio(1, 3)? {
         scene.insert("canonicalize".into(), json!(false));
     }
-    let takes_knots = matches!(
-        method,
-        Method::Geodesic | Method::Nlerp | Method::CatmullRom | Method::Squad | Method::Gamma
-    );
-    if takes_knots && u.ratio(1, 2)? {
-        let inner = matches!(method, Method::CatmullRom | Method::Gamma);
-        let count = if inner { n.saturating_sub(2) } else { n };
+    if let KnotRule::PerPoint { skip } = method.knots
+        && u.ratio(1, 2)?
+    {
+        let count = n.saturating_sub(2 * skip);
         let mut t = pick(u, &[0.0, -1e6, 1e9, 1e-9])?;
         let mut knots = Vec::with_capacity(count);
         for _ in 0..count {
@@ -316,36 +316,25 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
         }
         scene.insert("knots".into(), json!(knots));
     }
+    // Each parameter of the method's schema, sometimes, at an extreme or ordinary value.
     let mut params = Map::new();
-    match method {
-        Method::Beta => {
-            if u.ratio(2, 3)? {
-                params.insert("beta1".into(), json!(pick(u, &SHAPE_VALUES)?));
-            }
-            if u.ratio(2, 3)? {
-                params.insert("beta2".into(), json!(pick(u, &SHAPE_VALUES)?));
-            }
-            if u.ratio(1, 3)? {
-                params.insert("interpolate".into(), json!(false));
-            }
-            if u.ratio(1, 4)? {
-                params.insert("solver".into(), json!("jacobi"));
-            }
+    for p in method.params {
+        if p.advanced || !p.spheres.contains(parsed) || !u.ratio(2, 3)? {
+            continue;
         }
-        Method::Gamma if u.ratio(2, 3)? => {
-            params.insert("gamma".into(), json!(pick(u, &SHAPE_VALUES)?));
-        }
-        Method::ArcBlend | Method::CornerBlend => {
-            params.insert("order".into(), json!(u.int_in_range(1_u8..=10)?));
-            if method == Method::CornerBlend {
-                let f = pick(u, &[1e-12, 1e-6, 0.1, 0.25, 0.5])?;
-                params.insert("fraction".into(), json!(f));
+        let value = match p.kind {
+            ParamKind::Number { max, .. } if max <= 1.0 => {
+                json!(pick(u, &[1e-12, 1e-6, 0.1, 0.25, 0.5, max])?)
             }
-        }
-        Method::CatmullRom if space == "S3" && u.ratio(1, 2)? => {
-            params.insert("tangent".into(), json!("intrinsic"));
-        }
-        _ => {}
+            ParamKind::Number { .. } => json!(pick(u, &SHAPE_VALUES)?),
+            ParamKind::Integer { min, max, .. } => {
+                let hi = max.min(min + 20);
+                json!(u.int_in_range(min..=hi)?)
+            }
+            ParamKind::Bool { default } => json!(!default),
+            ParamKind::Choice(choices) => json!(pick(u, choices)?),
+        };
+        params.insert(p.name.into(), value);
     }
     if !params.is_empty() {
         scene.insert("params".into(), Value::Object(params));

@@ -1,13 +1,15 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! The scene's `view` object: camera, plot strip, body frames, flattening accuracy.
+//! The scene's `view` object: camera, plot strip, body frames, flattening accuracy. The
+//! renderer draws by it; this module only reads and checks it.
 
 use serde_json::{Map, Value};
 use spherekit::UnitQuat;
-use spherekit::glam::{DQuat, DVec3};
+use spherekit::glam::DQuat;
 
-use crate::RenderError;
+use crate::error::SceneError;
+use crate::space::Space;
 
 /// What the strip under the sphere shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,13 +31,13 @@ pub enum Plot {
 ///                                                (default all three for one curve, ["x"] for several)
 /// ```
 ///
-/// Without `camera`, S² scenes are viewed from the direction of the mean of their points (world
-/// z up, at most 60° above or below the equator) so the data faces the reader; S³ scenes, and
-/// points whose mean is near the centre, from yaw 35°, pitch 20°.
+/// Without `camera` the renderer chooses one (S² scenes are viewed from the direction of the
+/// mean of their points, so that the data faces the reader).
 #[derive(Clone, Debug, PartialEq)]
 pub struct View {
-    /// The camera orientation: its body x axis points right on screen, y up, z at the viewer.
-    pub camera: UnitQuat,
+    /// The camera orientation, when the scene gives one: its body x axis points right on
+    /// screen, y up, z at the viewer.
+    pub camera: Option<UnitQuat>,
     /// The plot strip.
     pub plot: Plot,
     /// Number of body-axis triads along each S³ curve.
@@ -52,9 +54,13 @@ pub const DEFAULT_ACCURACY: f64 = 1e-3;
 /// The most triads `view.frames` may ask for.
 pub const MAX_FRAMES: usize = 200;
 
-fn bad(field: &str, message: impl Into<String>) -> RenderError {
-    RenderError::View {
-        field: format!("view.{field}"),
+fn bad(field: &str, message: impl Into<String>) -> SceneError {
+    SceneError::Field {
+        field: if field.is_empty() {
+            "view".into()
+        } else {
+            format!("view.{field}")
+        },
         message: message.into(),
     }
 }
@@ -72,23 +78,24 @@ impl View {
         UnitQuat::try_new(a * b).unwrap_or(UnitQuat::IDENTITY)
     }
 
-    /// Reads `view` with the defaults for a scene on S³ (`quaternions`) or another sphere whose
-    /// points have the (unnormalised) mean `facing`.
+    /// Reads a scene's `view` (absent: the defaults) for a scene on `space` with `curves`
+    /// curves.
     ///
     /// # Errors
     ///
-    /// [`RenderError::View`] naming the bad field.
+    /// [`SceneError::Field`] naming the bad field (`view.camera`).
     pub fn from_json(
         view: Option<&Value>,
-        quaternions: bool,
-        facing: Option<DVec3>,
-        several: bool,
-    ) -> Result<Self, RenderError> {
+        space: Space,
+        curves: usize,
+    ) -> Result<Self, SceneError> {
+        let quaternions = space == Space::S3;
+        let several = curves > 1;
         let empty = Map::new();
         let map = match view {
             None => &empty,
             Some(Value::Object(m)) => m,
-            Some(_) => return Err(bad("", "must be an object").trim_field()),
+            Some(_) => return Err(bad("", "must be an object")),
         };
         if let Some(k) = map
             .keys()
@@ -100,19 +107,14 @@ impl View {
             ));
         }
         let camera = match map.get("camera") {
-            None => match facing.filter(|d| d.length() > 0.2) {
-                Some(d) => {
-                    let yaw = libm::atan2(d.y, d.x).to_degrees();
-                    let pitch = libm::atan2(d.z, d.truncate().length()).to_degrees();
-                    Self::camera_from_yaw_pitch(yaw, pitch.clamp(-60.0, 60.0))
-                }
-                None => Self::camera_from_yaw_pitch(35.0, 20.0),
-            },
+            None => None,
             Some(Value::Array(a)) => {
                 let c: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
                 match c.as_deref() {
-                    Some(&[w, x, y, z]) => UnitQuat::from_wxyz([w, x, y, z])
-                        .map_err(|e| bad("camera", format!("quaternion {e}")))?,
+                    Some(&[w, x, y, z]) => Some(
+                        UnitQuat::from_wxyz([w, x, y, z])
+                            .map_err(|e| bad("camera", format!("quaternion {}", e.predicate())))?,
+                    ),
                     _ => {
                         return Err(bad(
                             "camera",
@@ -122,7 +124,7 @@ impl View {
                 }
             }
             Some(Value::Object(o)) => {
-                let angle = |k: &str| -> Result<f64, RenderError> {
+                let angle = |k: &str| -> Result<f64, SceneError> {
                     match o.get(k) {
                         None => Ok(0.0),
                         Some(v) => v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
@@ -136,7 +138,7 @@ impl View {
                         "unknown camera option (yaw, pitch)",
                     ));
                 }
-                Self::camera_from_yaw_pitch(angle("yaw")?, angle("pitch")?)
+                Some(Self::camera_from_yaw_pitch(angle("yaw")?, angle("pitch")?))
             }
             Some(_) => {
                 return Err(bad(
@@ -209,57 +211,5 @@ impl View {
             accuracy,
             axes,
         })
-    }
-
-    /// Pixel position `[x, y]` and depth (positive towards the viewer) of a point of ℝ³ in an
-    /// image `size` pixels wide, as the renderer draws it.
-    #[must_use]
-    pub fn project(&self, p: DVec3, size: u32) -> [f64; 3] {
-        let [r, u, z] = self.axes();
-        let (c, radius) = sphere_frame(size);
-        [c + radius * p.dot(r), c - radius * p.dot(u), p.dot(z)]
-    }
-
-    /// The point of the sphere's visible hemisphere drawn at pixel `[x, y]` (the inverse of
-    /// [`View::project`]); a pixel outside the disc gives the nearest point of the rim.
-    #[must_use]
-    pub fn unproject(&self, x: f64, y: f64, size: u32) -> DVec3 {
-        let [r, u, z] = self.axes();
-        let (c, radius) = sphere_frame(size);
-        let (dx, dy) = ((x - c) / radius, (c - y) / radius);
-        let d2 = dx * dx + dy * dy;
-        if d2 >= 1.0 {
-            let d = d2.sqrt();
-            return r * (dx / d) + u * (dy / d);
-        }
-        r * dx + u * dy + z * (1.0 - d2).sqrt()
-    }
-
-    /// The camera's screen axes in world coordinates: right, up, and towards the viewer.
-    #[must_use]
-    pub fn axes(&self) -> [DVec3; 3] {
-        [
-            self.camera.rotate(DVec3::X),
-            self.camera.rotate(DVec3::Y),
-            self.camera.rotate(DVec3::Z),
-        ]
-    }
-}
-
-/// The sphere's centre (on both axes) and radius in pixels in an image `size` pixels wide.
-pub(crate) fn sphere_frame(size: u32) -> (f64, f64) {
-    let s = f64::from(size);
-    (0.5 * s, 0.45 * s)
-}
-
-impl RenderError {
-    fn trim_field(self) -> Self {
-        match self {
-            Self::View { message, .. } => Self::View {
-                field: "view".into(),
-                message,
-            },
-            e => e,
-        }
     }
 }

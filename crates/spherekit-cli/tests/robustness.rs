@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use serde_json::json;
-use spherekit::scene::{Method, Scene, Support};
+use spherekit_scene::{METHODS, Scene, Spheres};
 
 use arbtest::arbitrary as arb;
 #[path = "support/robust.rs"]
@@ -131,31 +131,31 @@ fn winding(coords: usize, n: usize) -> Vec<Vec<f64>> {
 #[test]
 fn ten_thousand_keys() {
     let mut failures = Vec::new();
-    for method in Method::ALL {
-        let spaces: &[(&str, usize)] = match method.support() {
-            Support::All => &[("S2", 3), ("S3", 4), ("S5", 6)],
-            Support::S3 => &[("S3", 4)],
+    for method in METHODS {
+        let spaces: &[(&str, usize)] = match method.spheres {
+            Spheres::All => &[("S2", 3), ("S3", 4), ("S5", 6)],
+            Spheres::S3 => &[("S3", 4)],
         };
-        let one_curve = matches!(method, Method::Bezier | Method::BezierKim);
-        let n = if method == Method::Bezier {
+        let one_curve = method.single_piece;
+        // De Casteljau's triangle on S^m: O(n²) slerps per evaluation.
+        let n = if one_curve && method.spheres == Spheres::All {
             300
         } else {
             10_000
         };
         let samples = if one_curve { 3 } else { 1001 };
         for &(space, coords) in spaces {
-            let one_curve = matches!(method, Method::Bezier | Method::BezierKim);
             let scene = json!({
-                "space": space, "method": method.id(), "points": winding(coords, n),
+                "space": space, "method": method.id, "points": winding(coords, n),
                 "samples": samples,
             });
             let render = (space == "S2" && !one_curve).then_some(32);
             match check_scene(&scene.to_string(), render) {
                 Ok(Outcome::Ok) => {}
                 Ok(Outcome::Rejected(e)) => {
-                    failures.push(format!("{} {space}: rejected: {e}", method.id()));
+                    failures.push(format!("{} {space}: rejected: {e}", method.id));
                 }
-                Err(e) => failures.push(format!("{} {space}: {e}", method.id())),
+                Err(e) => failures.push(format!("{} {space}: {e}", method.id)),
             }
         }
     }
@@ -247,7 +247,7 @@ fn bad_scene_catalog_in_process() {
 /// The golden harness reports a bad scene as `GoldenError::Scene` (no panic).
 #[test]
 fn golden_harness_reports_a_bad_scene() {
-    use spherekit_snapshot::golden::{GoldenError, check, render_scene_file};
+    use spherekit_cli::golden::{GoldenError, check, render_scene_file};
     let path = corpus_dir("bad").join("points_nan_literal.json");
     match render_scene_file(&path) {
         Err(GoldenError::Scene { name, message }) => {

@@ -15,7 +15,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use spherekit::scene::Scene;
+use spherekit_scene::Scene;
 use tiny_skia::{Color, FilterQuality, Pixmap, PixmapPaint, Transform};
 
 use crate::{decode_png, encode_png};
@@ -83,9 +83,7 @@ pub enum GoldenError {
 }
 
 fn bless_command(name: &str) -> String {
-    format!(
-        "UPDATE_GOLDENS={name} cargo test -p spherekit-snapshot --test golden (or `./run bless`)"
-    )
+    format!("UPDATE_GOLDENS={name} cargo test -p spherekit-cli --test golden (or `./run bless`)")
 }
 
 impl fmt::Display for GoldenError {

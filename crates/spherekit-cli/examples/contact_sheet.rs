@@ -4,12 +4,12 @@
 //! Writes `tests/golden/contact-sheet.png`: thumbnails of every golden reference, for review.
 //! Run with `./run contact-sheet`.
 
-use spherekit_snapshot::golden::{contact_sheet, golden_dir};
+use spherekit_cli::golden::{contact_sheet, golden_dir};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let sheet = contact_sheet(6, 128)?;
     let path = golden_dir().join("contact-sheet.png");
-    std::fs::write(&path, spherekit_snapshot::encode_png(&sheet)?)?;
+    std::fs::write(&path, spherekit_cli::encode_png(&sheet)?)?;
     println!("wrote {}", path.display());
     Ok(())
 }

@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! Golden images: every scene in `tests/golden/` renders to exactly its reference PNG.
-//! See `spherekit_snapshot::golden` for re-blessing.
+//! See `spherekit_cli::golden` for re-blessing.
 
-use spherekit_snapshot::golden::{check, golden_dir, scene_names};
+use spherekit_cli::golden::{check, golden_dir, scene_names};
 
 #[test]
 fn every_golden_scene_matches_its_reference() {

@@ -1,0 +1,335 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Curves built from a scene, and their samples as the CLI prints them.
+
+use serde_json::{Map, Value, json};
+use spherekit::{
+    Ambient, Curve, Jet, JointContinuity, Manifold, PointError, S2Point, SnPoint, UnitQuat, VecN,
+    angular_velocity_acceleration,
+};
+
+use crate::scene::{SampleOptions, Scene};
+
+/// A curve built from a scene, with the extras a method derives.
+#[derive(Debug)]
+pub struct Built<P: Manifold> {
+    /// The curve.
+    pub curve: Box<dyn Curve<Point = P>>,
+    /// The scene's points, normalised (and on S³ canonicalised when the scene asks for it).
+    pub inputs: Vec<P>,
+    /// Derived control points (empty when the method has none).
+    pub controls: Vec<P>,
+    /// Auxiliary vertices solved for (empty when the method has none).
+    pub auxiliary: Vec<P>,
+    /// Method-specific facts, such as solver iterations.
+    pub info: Map<String, Value>,
+    /// The order of continuity the construction guarantees at its joints (0 for C⁰; the
+    /// blend order n for Pobegailo's Cⁿ splines).
+    pub order: usize,
+}
+
+impl<P: ScenePoint> Built<P> {
+    /// A built curve with no extras, C⁰ at its joints.
+    pub(crate) fn new(curve: impl Curve<Point = P> + 'static, inputs: Vec<P>) -> Self {
+        Self {
+            curve: Box::new(curve),
+            inputs,
+            controls: Vec::new(),
+            auxiliary: Vec::new(),
+            info: Map::new(),
+            order: 0,
+        }
+    }
+
+    pub(crate) fn with_controls(mut self, controls: Vec<P>) -> Self {
+        self.controls = controls;
+        self
+    }
+
+    pub(crate) fn with_info(mut self, key: &str, value: Value) -> Self {
+        self.info.insert(key.into(), value);
+        self
+    }
+
+    pub(crate) fn with_order(mut self, order: usize) -> Self {
+        self.order = order;
+        self
+    }
+
+    /// The continuity report of the curve ([`spherekit::continuity`]).
+    #[must_use]
+    pub fn continuity(&self) -> Vec<JointContinuity> {
+        spherekit::continuity(&*self.curve)
+    }
+
+    fn sample_into(&self, scene: &Scene, options: SampleOptions, out: &mut Map<String, Value>) {
+        let deriv = options.deriv;
+        let domain = self.curve.domain();
+        let ts = scene.parameters(domain);
+        let mut points = Vec::with_capacity(ts.len());
+        let mut velocity = Vec::new();
+        let mut acceleration = Vec::new();
+        let mut omega = Vec::new();
+        let mut alpha = Vec::new();
+        // Batch evaluation: one call for all parameters, the same values as `jet`/`eval`.
+        if deriv {
+            let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
+            self.curve.jet_many(&ts, &mut jets);
+            for jet in &jets {
+                if let Some((w, a)) = P::angular(jet) {
+                    omega.push(json!(w));
+                    alpha.push(json!(a));
+                }
+                velocity.push(json!(P::vector_coords(&jet.velocity)));
+                acceleration.push(json!(P::vector_coords(&jet.acceleration)));
+                points.push(json!(jet.point.coords()));
+            }
+        } else {
+            let mut ps = vec![self.curve.eval(domain[0]); ts.len()];
+            self.curve.eval_many(&ts, &mut ps);
+            points.extend(ps.iter().map(|p| json!(p.coords())));
+        }
+        out.insert("domain".into(), json!(domain));
+        out.insert("t".into(), json!(ts));
+        out.insert("points".into(), Value::Array(points));
+        if deriv {
+            out.insert("velocity".into(), Value::Array(velocity));
+            out.insert("acceleration".into(), Value::Array(acceleration));
+            if !omega.is_empty() {
+                out.insert("angular_velocity".into(), Value::Array(omega));
+                out.insert("angular_acceleration".into(), Value::Array(alpha));
+            }
+        }
+        let list = |ps: &[P]| Value::Array(ps.iter().map(|p| json!(p.coords())).collect());
+        if !self.controls.is_empty() {
+            out.insert("controls".into(), list(&self.controls));
+        }
+        if !self.auxiliary.is_empty() {
+            out.insert("auxiliary".into(), list(&self.auxiliary));
+        }
+        if !self.info.is_empty() {
+            out.insert("info".into(), Value::Object(self.info.clone()));
+        }
+        if options.continuity {
+            out.insert(
+                "continuity".into(),
+                continuity_json(&self.continuity(), self.order),
+            );
+        }
+    }
+
+    fn sample_field(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
+        let domain = self.curve.domain();
+        let flat = |ps: &[P]| ps.iter().flat_map(ScenePoint::coords).collect();
+        Some(match field {
+            "domain" => domain.to_vec(),
+            "t" => scene.parameters(domain),
+            "controls" => flat(&self.controls),
+            "auxiliary" => flat(&self.auxiliary),
+            "points" => {
+                let ts = scene.parameters(domain);
+                let mut ps = vec![self.curve.eval(domain[0]); ts.len()];
+                self.curve.eval_many(&ts, &mut ps);
+                flat(&ps)
+            }
+            "angular_velocity" | "angular_acceleration"
+                if P::angular(&self.curve.jet(domain[0])).is_none() =>
+            {
+                Vec::new()
+            }
+            "velocity" | "acceleration" | "angular_velocity" | "angular_acceleration" => {
+                let ts = scene.parameters(domain);
+                let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
+                self.curve.jet_many(&ts, &mut jets);
+                let mut out = Vec::with_capacity(3 * jets.len());
+                for jet in &jets {
+                    match (field, P::angular(jet)) {
+                        ("velocity", _) => out.extend(P::vector_coords(&jet.velocity)),
+                        ("acceleration", _) => out.extend(P::vector_coords(&jet.acceleration)),
+                        ("angular_velocity", Some((w, _))) => out.extend(w),
+                        ("angular_acceleration", Some((_, a))) => out.extend(a),
+                        _ => {}
+                    }
+                }
+                out
+            }
+            _ => return None,
+        })
+    }
+}
+
+/// The tolerance below which a jump counts as zero in the continuity classes.
+pub const CONTINUITY_TOLERANCE: f64 = 1e-9;
+
+/// The continuity report as JSON: `[{ "t", "c0", "c1", "c2", "g1", "class" }, …]`, with the
+/// class of [`JointContinuity::class`] at [`CONTINUITY_TOLERANCE`] and the construction's
+/// guaranteed `order`.
+#[must_use]
+pub fn continuity_json(report: &[JointContinuity], order: usize) -> Value {
+    Value::Array(
+        report
+            .iter()
+            .map(|j| {
+                json!({ "t": j.t, "c0": j.c0, "c1": j.c1, "c2": j.c2, "g1": j.g1,
+                        "class": j.class(CONTINUITY_TOLERANCE, order).to_string() })
+            })
+            .collect(),
+    )
+}
+
+/// A curve built from a scene, on its space.
+#[derive(Debug)]
+pub enum BuiltCurve {
+    /// A curve on S².
+    S2(Built<S2Point>),
+    /// A curve of orientations.
+    S3(Built<UnitQuat>),
+    /// A curve on S^m.
+    Sn(Built<SnPoint>),
+}
+
+/// Builds the same expression on every sphere: `on_every_sphere!(points, |p| expr)` matches
+/// [`Points`](crate::scene::Points) and wraps `expr` (a [`Built`]) in the [`BuiltCurve`] of
+/// the same sphere, so a method's build function is written once for S², S³ and S^m.
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        match $points {
+            $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
+            $crate::scene::Points::S3($p) => $crate::built::BuiltCurve::S3($body),
+            $crate::scene::Points::Sn($p) => $crate::built::BuiltCurve::Sn($body),
+        }
+    };
+}
+pub(crate) use on_every_sphere;
+
+/// The fields [`BuiltCurve::sample_field`] gives, as [`Scene::sample_json`] names them.
+pub const SAMPLE_FIELDS: [&str; 9] = [
+    "t",
+    "points",
+    "velocity",
+    "acceleration",
+    "angular_velocity",
+    "angular_acceleration",
+    "controls",
+    "auxiliary",
+    "domain",
+];
+
+impl BuiltCurve {
+    /// One field of [`Scene::sample_json`] for this curve, its rows one after another, without
+    /// building JSON: `t`, `points`, `velocity`, `acceleration`, `angular_velocity` and
+    /// `angular_acceleration` (S³; empty elsewhere), `controls`, `auxiliary` (empty when the
+    /// method has none) or `domain`. `None` for any other name (see [`SAMPLE_FIELDS`]).
+    ///
+    /// ```
+    /// use spherekit_scene::Scene;
+    ///
+    /// let scene = Scene::from_json(r#"{"space":"S2","method":"geodesic","samples":3,
+    ///     "points":[[1,0,0],[0,1,0]]}"#).unwrap();
+    /// let curves = scene.build().unwrap();
+    /// let points = curves[0].sample_field(&scene, "points").unwrap();
+    /// assert_eq!(points.len(), 3 * 3);
+    /// assert!((points[3] - 0.5_f64.sqrt()).abs() < 1e-15); // the middle sample, x
+    /// assert!(curves[0].sample_field(&scene, "speed").is_none());
+    /// ```
+    #[must_use]
+    pub fn sample_field(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
+        match self {
+            Self::S2(b) => b.sample_field(scene, field),
+            Self::S3(b) => b.sample_field(scene, field),
+            Self::Sn(b) => b.sample_field(scene, field),
+        }
+    }
+
+    pub(crate) fn sample_into(
+        &self,
+        scene: &Scene,
+        options: SampleOptions,
+        out: &mut Map<String, Value>,
+    ) {
+        match self {
+            Self::S2(b) => b.sample_into(scene, options, out),
+            Self::S3(b) => b.sample_into(scene, options, out),
+            Self::Sn(b) => b.sample_into(scene, options, out),
+        }
+    }
+
+    /// The continuity report and the construction's guaranteed order at the joints.
+    #[must_use]
+    pub fn continuity(&self) -> (Vec<JointContinuity>, usize) {
+        match self {
+            Self::S2(b) => (b.continuity(), b.order),
+            Self::S3(b) => (b.continuity(), b.order),
+            Self::Sn(b) => (b.continuity(), b.order),
+        }
+    }
+
+    /// The parameter interval of the curve.
+    #[must_use]
+    pub fn domain(&self) -> [f64; 2] {
+        match self {
+            Self::S2(b) => b.curve.domain(),
+            Self::S3(b) => b.curve.domain(),
+            Self::Sn(b) => b.curve.domain(),
+        }
+    }
+}
+
+/// The conversions between a sphere's points and the scene's number lists.
+pub trait ScenePoint: Manifold + 'static {
+    /// Builds a point from scene coordinates (normalising).
+    ///
+    /// # Errors
+    ///
+    /// As the point type's `try_new`.
+    fn from_coords(c: &[f64]) -> Result<Self, PointError>;
+    /// The scene coordinates.
+    fn coords(&self) -> Vec<f64>;
+    /// An ambient vector in the scene's coordinate order.
+    fn vector_coords(v: &Self::Vector) -> Vec<f64>;
+    /// Angular velocity and acceleration (space frame) where the space has them.
+    fn angular(_jet: &Jet<Self>) -> Option<([f64; 3], [f64; 3])> {
+        None
+    }
+}
+
+impl ScenePoint for S2Point {
+    fn from_coords(c: &[f64]) -> Result<Self, PointError> {
+        Self::try_new(spherekit::glam::DVec3::from_slice(c))
+    }
+    fn coords(&self) -> Vec<f64> {
+        self.as_dvec3().to_array().to_vec()
+    }
+    fn vector_coords(v: &spherekit::glam::DVec3) -> Vec<f64> {
+        v.to_array().to_vec()
+    }
+}
+
+impl ScenePoint for UnitQuat {
+    fn from_coords(c: &[f64]) -> Result<Self, PointError> {
+        Self::from_wxyz([c[0], c[1], c[2], c[3]])
+    }
+    fn coords(&self) -> Vec<f64> {
+        self.to_wxyz().to_vec()
+    }
+    fn vector_coords(v: &spherekit::glam::DVec4) -> Vec<f64> {
+        vec![v.w, v.x, v.y, v.z]
+    }
+    fn angular(jet: &Jet<Self>) -> Option<([f64; 3], [f64; 3])> {
+        let (w, a) = angular_velocity_acceleration(jet.point, jet.velocity, jet.acceleration);
+        Some((w.to_array(), a.to_array()))
+    }
+}
+
+impl ScenePoint for SnPoint {
+    fn from_coords(c: &[f64]) -> Result<Self, PointError> {
+        Self::try_new(c.to_vec())
+    }
+    fn coords(&self) -> Vec<f64> {
+        SnPoint::coords(self).to_vec()
+    }
+    fn vector_coords(v: &VecN) -> Vec<f64> {
+        v.to_vec()
+    }
+}

@@ -1,0 +1,71 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The spherekit scene format: one JSON description of curves on a sphere, shared by the
+//! `spherekit` CLI, the renderer, the browser playground and the golden-image tests. This
+//! crate parses, validates, builds, samples and edits scenes; [`METHODS`] is the method
+//! registry every front end reads.
+//!
+//! ```text
+//! { "space": "S2" | "S3" | "S<m>",      S3: quaternions [w, x, y, z]; S2: [x, y, z]; S<m>: m+1 numbers
+//!   "method": "<method id>",            see METHODS (`spherekit methods`)
+//!   "points": [[...], ...],             normalised on input; a point that cannot be is an error
+//!   "knots": [...],                     optional, strictly increasing (methods that take them)
+//!   "params": { ... },                  optional, method specific (Method::params)
+//!   "canonicalize": true | false,       optional; S3 only; default true (see spherekit::unflip)
+//!   "color": "#rrggbb",                 optional
+//!   "samples": 256,                     optional: uniform parameters over the domain, ends included
+//!   "eval_at": [t, ...],                optional: explicit parameters instead of "samples"
+//!   "view": { ... } }                   optional, used by rendering (see View)
+//! ```
+//!
+//! Several curves on one sphere: `"curves": [{ "method", "points", "knots", "params",
+//! "canonicalize", "color" }, …]` in place of the single-curve fields. Unknown fields are
+//! rejected, so a misspelt option is an error rather than silently ignored. Errors name the
+//! field (`points[3]: …`, `curves[1].params.order: …`); the library's own errors say what is
+//! wrong, this layer says where.
+//!
+//! # Examples
+//!
+//! ```
+//! use spherekit_scene::Scene;
+//!
+//! let scene = Scene::from_json(r#"{ "space": "S2", "method": "geodesic",
+//!     "points": [[1, 0, 0], [0, 2, 0]], "samples": 3 }"#).unwrap();
+//! let out = scene.sample_json(&scene.build().unwrap(), false);
+//! assert_eq!(out["t"], serde_json::json!([0.0, 0.5, 1.0]));
+//! assert_eq!(out["points"][2], serde_json::json!([0.0, 1.0, 0.0]));
+//!
+//! let err = Scene::from_json(r#"{ "space": "S2", "method": "geodesic",
+//!     "points": [[1, 0, 0], [0, 0, 0]] }"#).unwrap().build().unwrap_err();
+//! assert_eq!(err.to_string(), "points[1] has zero length and cannot be normalised");
+//! ```
+//!
+//! # Adding a method
+//!
+//! Write the construction in the `spherekit` crate, then one file in `src/methods/` with its
+//! [`Method`] descriptor (id, summary, spheres, knot rule, minimum points, parameters) and its
+//! build function, and list it in [`METHODS`]. The registry test fails until the method has a
+//! golden scene in `tests/golden/`, a section in `web/docs.html` and robustness cases.
+
+mod built;
+mod edit;
+mod error;
+mod json;
+mod methods;
+mod params;
+mod registry;
+mod scene;
+mod space;
+mod view;
+
+pub use built::{
+    Built, BuiltCurve, CONTINUITY_TOLERANCE, SAMPLE_FIELDS, ScenePoint, continuity_json,
+};
+pub use edit::{Document, EditError};
+pub use error::{SceneError, one_line};
+pub use params::{Param, ParamKind, PerJoint};
+pub use registry::{KnotRule, METHODS, Method, Spheres, registry_json};
+pub use scene::{CurveSpec, DEFAULT_SAMPLES, MAX_SAMPLES, SampleOptions, Sampling, Scene};
+pub use space::{MAX_DIMENSION, Space};
+pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, Plot, View};

@@ -1,0 +1,59 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! `catmull-rom`: [`spherekit::CatmullRom`].
+
+use spherekit::CatmullRom;
+
+use crate::built::{Built, BuiltCurve, on_every_sphere};
+use crate::error::SceneError;
+use crate::params::{Param, ParamKind};
+use crate::registry::{KnotRule, Method, Spheres};
+use crate::scene::{Input, Points};
+
+pub(crate) static METHOD: Method = Method {
+    id: "catmull-rom",
+    type_name: "CatmullRom",
+    summary: "Catmull-Rom spline by slerps (first and last points steer the ends)",
+    continuity: "C¹",
+    source: "Catmull & Rom (1974); on S³ by slerps as in the textbook quaternion Catmull-Rom",
+    spheres: Spheres::All,
+    knots: KnotRule::PerPoint { skip: 1 },
+    min_points: 4,
+    interpolates: false,
+    single_piece: false,
+    params: &[Param::number(
+        "tangent",
+        "tangent",
+        "S3: the textbook's quaternion-difference tangents or intrinsic (log map) ones",
+        [0.0; 3],
+    )
+    .with_kind(ParamKind::Choice(&["quaternion", "intrinsic"]))
+    .s3_only()],
+    build,
+};
+
+fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
+    let knots = input.knots;
+    if let Points::S3(keys) = input.points {
+        let tangent = input.params.choice("tangent")?;
+        input.params.finish()?;
+        let curve = if tangent == "quaternion" {
+            CatmullRom::try_new_quaternion(keys.clone(), knots)?
+        } else {
+            CatmullRom::try_new(keys.clone(), knots)?
+        };
+        let controls = curve.controls().to_vec();
+        return Ok(BuiltCurve::S3(
+            Built::new(curve, keys)
+                .with_controls(controls)
+                .with_order(1),
+        ));
+    }
+    input.params.finish()?;
+    Ok(on_every_sphere!(input.points, |p| {
+        let curve = CatmullRom::try_new(p.clone(), knots)?;
+        let controls = curve.controls().to_vec();
+        Built::new(curve, p).with_controls(controls).with_order(1)
+    }))
+}

@@ -1,0 +1,337 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! A method's parameters: their schema (one list per method, in the registry) and typed
+//! access to a scene's `params` object that checks every key against it.
+
+use serde_json::{Map, Value, json};
+
+use crate::error::{SceneError, field_error};
+use crate::registry::{Method, Spheres};
+
+/// One parameter of a method, as the registry describes it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Param {
+    /// The key in `params`.
+    pub name: &'static str,
+    /// A short label for controls (`γ`, `β₁ bias`).
+    pub label: &'static str,
+    /// One line on what it does.
+    pub summary: &'static str,
+    /// Its type, default and range.
+    pub kind: ParamKind,
+    /// Whether a list with one value per joint is accepted in place of one number.
+    pub per_joint: Option<PerJoint>,
+    /// The spheres it applies to.
+    pub spheres: Spheres,
+    /// A solver setting rather than a shape parameter: the page gives it no control of its own.
+    pub advanced: bool,
+}
+
+/// The type of a parameter, its default and its range.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamKind {
+    /// A finite number. `min..=max` is the range a control offers; the construction checks
+    /// validity (and may accept more).
+    Number {
+        /// The value when the key is absent.
+        default: f64,
+        /// Lower end of the offered range.
+        min: f64,
+        /// Upper end of the offered range.
+        max: f64,
+    },
+    /// A whole number in `min..=max` (checked).
+    Integer {
+        /// The value when the key is absent.
+        default: u64,
+        /// The smallest value.
+        min: u64,
+        /// The largest value.
+        max: u64,
+    },
+    /// `true` or `false`.
+    Bool {
+        /// The value when the key is absent.
+        default: bool,
+    },
+    /// One of a list of names; the first is the default.
+    Choice(&'static [&'static str]),
+}
+
+/// How a per-joint list lines up with the points: it has `points − 2·skip` entries, the first
+/// for point `skip`, numbered from `first` in the sources.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PerJoint {
+    /// Points at each end without an entry.
+    pub skip: usize,
+    /// The sources' index of the first entry (the Gamma paper's γ₁).
+    pub first: usize,
+}
+
+impl Param {
+    /// A number parameter with an offered range, for one value only.
+    pub(crate) const fn number(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+        [default, min, max]: [f64; 3],
+    ) -> Self {
+        Self {
+            name,
+            label,
+            summary,
+            kind: ParamKind::Number { default, min, max },
+            per_joint: None,
+            spheres: Spheres::All,
+            advanced: false,
+        }
+    }
+
+    /// Accepts a per-joint list too.
+    pub(crate) const fn per_joint(mut self, skip: usize, first: usize) -> Self {
+        self.per_joint = Some(PerJoint { skip, first });
+        self
+    }
+
+    /// Applies on S³ only.
+    pub(crate) const fn s3_only(mut self) -> Self {
+        self.spheres = Spheres::S3;
+        self
+    }
+
+    /// A solver setting.
+    pub(crate) const fn advanced(mut self) -> Self {
+        self.advanced = true;
+        self
+    }
+
+    pub(crate) const fn with_kind(mut self, kind: ParamKind) -> Self {
+        self.kind = kind;
+        self
+    }
+
+    /// The parameter as JSON (for `spherekit methods --json` and the page's controls).
+    #[must_use]
+    pub fn to_json(&self) -> Value {
+        let (kind, extra) = match self.kind {
+            ParamKind::Number { default, min, max } => (
+                "number",
+                json!({ "default": default, "min": min, "max": max }),
+            ),
+            ParamKind::Integer { default, min, max } => (
+                "integer",
+                json!({ "default": default, "min": min, "max": max }),
+            ),
+            ParamKind::Bool { default } => ("bool", json!({ "default": default })),
+            ParamKind::Choice(choices) => (
+                "choice",
+                json!({ "default": choices[0], "choices": choices }),
+            ),
+        };
+        let mut out = json!({
+            "name": self.name,
+            "label": self.label,
+            "summary": self.summary,
+            "type": kind,
+            "spaces": self.spheres.describe(),
+            "advanced": self.advanced,
+        });
+        if let (Value::Object(o), Value::Object(e)) = (&mut out, extra) {
+            o.extend(e);
+            o.insert(
+                "per_joint".into(),
+                match self.per_joint {
+                    None => Value::Null,
+                    Some(p) => json!({ "skip": p.skip, "first": p.first }),
+                },
+            );
+        }
+        out
+    }
+}
+
+/// A parameter given as one number for every point or joint, or as a list.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum NumberOrList {
+    One(f64),
+    List(Vec<f64>),
+}
+
+/// Typed access to a curve's `params`, by the method's schema; keys the method does not
+/// have (or that do not apply on this sphere) are an error at [`Params::finish`].
+#[derive(Debug)]
+pub(crate) struct Params<'a> {
+    method: &'static Method,
+    map: &'a Map<String, Value>,
+    used: Vec<&'static str>,
+}
+
+impl<'a> Params<'a> {
+    pub(crate) fn new(method: &'static Method, map: &'a Map<String, Value>) -> Self {
+        Self {
+            method,
+            map,
+            used: Vec::new(),
+        }
+    }
+
+    fn schema(&self, name: &str) -> Option<&'static Param> {
+        let p = self.method.params.iter().find(|p| p.name == name);
+        debug_assert!(
+            p.is_some(),
+            "{} reads an unregistered parameter {name}",
+            self.method.id
+        );
+        p
+    }
+
+    fn get(&mut self, name: &'static str) -> Option<&'a Value> {
+        self.used.push(name);
+        self.map.get(name)
+    }
+
+    /// A number (the schema's default when absent).
+    pub(crate) fn number(&mut self, name: &'static str) -> Result<f64, SceneError> {
+        let default = match self.schema(name).map(|p| p.kind) {
+            Some(ParamKind::Number { default, .. }) => default,
+            _ => 0.0,
+        };
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) => v
+                .as_f64()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| field_error(format!("params.{name}"), "must be a finite number")),
+        }
+    }
+
+    /// A number, a list of numbers, or the schema's default. Ranges and list lengths are
+    /// checked by the construction, which knows them.
+    pub(crate) fn number_or_list(
+        &mut self,
+        name: &'static str,
+    ) -> Result<NumberOrList, SceneError> {
+        let default = match self.schema(name).map(|p| p.kind) {
+            Some(ParamKind::Number { default, .. }) => default,
+            _ => 0.0,
+        };
+        match self.get(name) {
+            None => Ok(NumberOrList::One(default)),
+            Some(Value::Array(a)) => a
+                .iter()
+                .enumerate()
+                .map(|(i, v)| {
+                    v.as_f64().ok_or_else(|| {
+                        field_error(format!("params.{name}[{i}]"), "must be a number")
+                    })
+                })
+                .collect::<Result<_, _>>()
+                .map(NumberOrList::List),
+            Some(v) => v.as_f64().map(NumberOrList::One).ok_or_else(|| {
+                field_error(
+                    format!("params.{name}"),
+                    "must be a number or a list of numbers",
+                )
+            }),
+        }
+    }
+
+    /// A positive number, or `None` when absent.
+    pub(crate) fn positive(&mut self, name: &'static str) -> Result<Option<f64>, SceneError> {
+        let _ = self.schema(name);
+        match self.get(name) {
+            None => Ok(None),
+            Some(v) => v
+                .as_f64()
+                .filter(|x| x.is_finite() && *x > 0.0)
+                .map(Some)
+                .ok_or_else(|| field_error(format!("params.{name}"), "must be a positive number")),
+        }
+    }
+
+    /// A whole number in the schema's range; `None` when absent and the schema has no default.
+    pub(crate) fn integer(&mut self, name: &'static str) -> Result<usize, SceneError> {
+        let (default, min, max) = match self.schema(name).map(|p| p.kind) {
+            Some(ParamKind::Integer { default, min, max }) => (default, min, max),
+            _ => (0, 0, u64::MAX),
+        };
+        let n = match self.get(name) {
+            None => default,
+            Some(v) => v.as_u64().ok_or_else(|| {
+                field_error(
+                    format!("params.{name}"),
+                    format!("must be a whole number from {min} to {max}"),
+                )
+            })?,
+        };
+        (min..=max)
+            .contains(&n)
+            .then(|| usize::try_from(n).ok())
+            .flatten()
+            .ok_or_else(|| {
+                field_error(
+                    format!("params.{name}"),
+                    format!("must be a whole number from {min} to {max}, got {n}"),
+                )
+            })
+    }
+
+    /// A whole number in the schema's range, or `None` when absent.
+    pub(crate) fn optional_integer(
+        &mut self,
+        name: &'static str,
+    ) -> Result<Option<usize>, SceneError> {
+        if self.map.contains_key(name) {
+            self.integer(name).map(Some)
+        } else {
+            self.used.push(name);
+            Ok(None)
+        }
+    }
+
+    /// `true` or `false` (the schema's default when absent).
+    pub(crate) fn boolean(&mut self, name: &'static str) -> Result<bool, SceneError> {
+        let default = matches!(
+            self.schema(name).map(|p| p.kind),
+            Some(ParamKind::Bool { default: true })
+        );
+        match self.get(name) {
+            None => Ok(default),
+            Some(v) => v
+                .as_bool()
+                .ok_or_else(|| field_error(format!("params.{name}"), "must be true or false")),
+        }
+    }
+
+    /// One of the schema's choices (the first when absent).
+    pub(crate) fn choice(&mut self, name: &'static str) -> Result<&'static str, SceneError> {
+        let choices: &'static [&'static str] = match self.schema(name).map(|p| p.kind) {
+            Some(ParamKind::Choice(c)) => c,
+            _ => &[""],
+        };
+        match self.get(name) {
+            None => Ok(choices[0]),
+            Some(v) => v
+                .as_str()
+                .and_then(|s| choices.iter().find(|c| **c == s).copied())
+                .ok_or_else(|| {
+                    field_error(
+                        format!("params.{name}"),
+                        format!("must be one of: {}", choices.join(", ")),
+                    )
+                }),
+        }
+    }
+
+    /// Rejects keys no accessor asked for.
+    pub(crate) fn finish(self) -> Result<(), SceneError> {
+        match self.map.keys().find(|k| !self.used.contains(&k.as_str())) {
+            None => Ok(()),
+            Some(k) => Err(field_error(
+                format!("params.{k}"),
+                format!("unknown parameter for method \"{}\"", self.method.id),
+            )),
+        }
+    }
+}

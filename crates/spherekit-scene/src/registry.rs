@@ -1,0 +1,178 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The method registry: one [`Method`] descriptor per curve construction (in `methods/`, one
+//! file each), listed once in [`METHODS`]. Everything that enumerates methods reads this list:
+//! the scene parser, `spherekit methods [--json]`, the renderer, the wasm `methods()` and the
+//! page's parameter controls, knot-following when points are edited, and the tests.
+
+use core::fmt;
+
+use serde_json::{Value, json};
+
+use crate::built::BuiltCurve;
+use crate::error::{SceneError, field_error};
+use crate::methods;
+use crate::params::Param;
+use crate::scene::Input;
+use crate::space::Space;
+
+/// Every registered method, in the order `spherekit methods` lists them.
+pub static METHODS: &[&Method] = &[
+    &methods::geodesic::METHOD,
+    &methods::nlerp::METHOD,
+    &methods::bezier::METHOD,
+    &methods::bezier_kim::METHOD,
+    &methods::bspline_kim::METHOD,
+    &methods::squad::METHOD,
+    &methods::catmull_rom::METHOD,
+    &methods::gamma::METHOD,
+    &methods::beta::METHOD,
+    &methods::arc_blend::METHOD,
+    &methods::corner_blend::METHOD,
+];
+
+/// A curve construction as scenes name it: what it is, what it takes, and how to build it.
+pub struct Method {
+    /// The scene id (`"squad"`).
+    pub id: &'static str,
+    /// The library type that implements it (`"Squad"`).
+    pub type_name: &'static str,
+    /// One line on what it is.
+    pub summary: &'static str,
+    /// Its continuity at the joints, as the construction guarantees it (`"C¹"`, `"Cⁿ"`).
+    pub continuity: &'static str,
+    /// The publication it follows.
+    pub source: &'static str,
+    /// The spheres it works on.
+    pub spheres: Spheres,
+    /// Whether and how it takes `knots`.
+    pub knots: KnotRule,
+    /// The fewest points it accepts.
+    pub min_points: usize,
+    /// Whether the curve passes through its points (otherwise the renderer draws their polygon).
+    pub interpolates: bool,
+    /// Whether the curve is one piece whose degree grows with the number of points (Bézier
+    /// curves: an evaluation costs O(n²)), rather than pieces between consecutive points.
+    pub single_piece: bool,
+    /// Its parameters, the keys of `params`.
+    pub params: &'static [Param],
+    pub(crate) build: fn(Input<'_>) -> Result<BuiltCurve, SceneError>,
+}
+
+impl fmt::Debug for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Method")
+            .field("id", &self.id)
+            .finish_non_exhaustive()
+    }
+}
+
+impl PartialEq for Method {
+    fn eq(&self, other: &Self) -> bool {
+        self.id == other.id
+    }
+}
+
+/// Which spheres a method (or a parameter) works on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Spheres {
+    /// S², S³ and every S^m.
+    All,
+    /// S³ only.
+    S3,
+}
+
+impl Spheres {
+    /// A human-readable list of the spheres.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::All => "S2, S3, S<m>",
+            Self::S3 => "S3",
+        }
+    }
+
+    /// Whether `space` is one of them.
+    #[must_use]
+    pub fn contains(self, space: Space) -> bool {
+        match self {
+            Self::All => true,
+            Self::S3 => space == Space::S3,
+        }
+    }
+}
+
+/// Whether a method takes `knots`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KnotRule {
+    /// Optional knots, one per point except `skip` points at each end (Catmull-Rom's steering
+    /// end points have none); uniform `0, 1, 2, …` when absent.
+    PerPoint {
+        /// Points at each end without a knot.
+        skip: usize,
+    },
+    /// The method computes its own parametrisation (reported in `info.knots`).
+    Computed,
+    /// The method has a single parameter interval `[0, 1]`.
+    None,
+}
+
+impl KnotRule {
+    /// The number of knots for `points` points, where the method takes knots.
+    #[must_use]
+    pub fn count(self, points: usize) -> Option<usize> {
+        match self {
+            Self::PerPoint { skip } => Some(points.saturating_sub(2 * skip)),
+            Self::Computed | Self::None => None,
+        }
+    }
+}
+
+impl Method {
+    /// Finds a method by its scene id.
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError::Field`] on `method` listing the known ids.
+    pub fn find(id: &str) -> Result<&'static Self, SceneError> {
+        METHODS.iter().copied().find(|m| m.id == id).ok_or_else(|| {
+            let ids: Vec<_> = METHODS.iter().map(|m| m.id).collect();
+            field_error(
+                "method",
+                format!("unknown method \"{id}\"; known: {}", ids.join(", ")),
+            )
+        })
+    }
+
+    /// The descriptor as JSON: `{ "id", "type", "summary", "continuity", "source", "spaces",
+    /// "knots", "min_points", "interpolates", "params": [...] }`, where `knots` is
+    /// `{ "skip": k }` for methods that take one knot per point but `k` at each end, or
+    /// `"computed"` / `"none"`.
+    #[must_use]
+    pub fn to_json(&self) -> Value {
+        json!({
+            "id": self.id,
+            "type": self.type_name,
+            "summary": self.summary,
+            "continuity": self.continuity,
+            "source": self.source,
+            "spaces": self.spheres.describe(),
+            "knots": match self.knots {
+                KnotRule::PerPoint { skip } => json!({ "skip": skip }),
+                KnotRule::Computed => json!("computed"),
+                KnotRule::None => json!("none"),
+            },
+            "min_points": self.min_points,
+            "interpolates": self.interpolates,
+            "single_piece": self.single_piece,
+            "params": self.params.iter().map(Param::to_json).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// The whole registry as JSON, a list of [`Method::to_json`].
+#[must_use]
+pub fn registry_json() -> Value {
+    Value::Array(METHODS.iter().map(|m| m.to_json()).collect())
+}
