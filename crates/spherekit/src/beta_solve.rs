@@ -1,7 +1,8 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Numerical kernel of the spherical Beta-spline interpolation problem (spec §9.4–9.5).
+//! Numerical kernel of the spherical Beta-spline interpolation problem (Yang et al. 2021,
+//! §4.1–4.2; the system and the solver as stated in `docs/derivations.md#beta-system`).
 //!
 //! The unknowns are the auxiliary vertices `d₁ … dₙ₋₁`; row `i` of the system says that the
 //! junction point
@@ -67,7 +68,7 @@ impl Coords for VecN {
     }
 }
 
-/// The shape constants of the system (spec §9.4), all in `(0, 1)`.
+/// The shape constants of the system (`docs/derivations.md#beta-system`), all in `(0, 1)`.
 #[derive(Clone, Debug)]
 pub(crate) struct Shape {
     /// `η_j = γ_j / D_{j+1}` per arc `d_j d_{j+1}`, `j = 0..n−1` (position of `q_{j,1}`).
@@ -115,12 +116,12 @@ fn dsinc(x: f64) -> f64 {
     }
 }
 
-/// `r(s, θ) = sin(sθ)/sin θ` (spec §1.4), for θ ∈ [0, π).
+/// `r(s, θ) = sin(sθ)/sin θ` (`r(s, 0) = s`), for θ ∈ [0, π).
 fn ratio_value(s: f64, theta: f64) -> f64 {
     s * math::sinc(s * theta) / math::sinc(theta)
 }
 
-/// `r(s, θ) = sin(sθ)/sin θ` (spec §1.4) and its derivative in θ, for θ ∈ [0, π).
+/// `r(s, θ) = sin(sθ)/sin θ` (`r(s, 0) = s`) and its derivative in θ, for θ ∈ [0, π).
 pub(crate) fn ratio(s: f64, theta: f64) -> (f64, f64) {
     let (a, b) = (math::sinc(s * theta), math::sinc(theta));
     let r = s * a / b;
@@ -317,7 +318,8 @@ impl<'a, V: Coords> System<'a, V> {
         Some((max, sum))
     }
 
-    /// One Jacobi update of eq. (19) in the robust form of spec §9.5, normalised.
+    /// One Jacobi update of eq. (19) in the robust form of `docs/derivations.md#beta-solver`,
+    /// normalised.
     pub(crate) fn jacobi_step(&self, d: &[V]) -> Option<Vec<V>> {
         let n = self.n();
         let sh = self.shape;

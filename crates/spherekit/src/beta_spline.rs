@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! The cubic spherical Beta spline on S^m with bias β₁ and tension β₂, and its interpolation
-//! solvers (spec §9, seed 003).
+//! solvers (Yang, Wang, Chen, Sun & He 2021; see `docs/references.md`).
 
 use glam::{DVec3, DVec4};
 
@@ -15,7 +15,7 @@ use crate::manifold::Manifold;
 use crate::slerp_jet::ScalarJet;
 
 /// Two consecutive data points closer than this (radians) are [`SplineError::Coincident`]
-/// (spec §1.6, ε₀).
+/// (an input-hygiene threshold of spherekit, not of the paper).
 pub const COINCIDENT_TOLERANCE: f64 = 1e-12;
 
 /// A shape parameter of [`BetaSpline`]: one value for every point, or one value per point.
@@ -190,7 +190,7 @@ pub struct SolveInfo {
     pub residual: f64,
 }
 
-/// The cubic spherical Beta spline (Yang, Wang, Chen, Sun, He 2021; seed 003, spec §9) on any
+/// The cubic spherical Beta spline (Yang, Wang, Chen, Sun & He 2021, §3–4) on any
 /// sphere, with bias β₁ and tension β₂ per point, built from auxiliary vertices `d₀ … dₙ` or
 /// interpolating data points `p₀ … pₙ`.
 ///
@@ -213,14 +213,14 @@ pub struct SolveInfo {
 /// X(t)      = Q[q_{i−1,0}, q_{i−1,1}, q_{i−1,2}, q_{i,0}](t − i + 1),   t ∈ [i − 1, i]
 /// ```
 ///
-/// with `Q` the cubic de Casteljau spherical Bézier curve ([`CubicSegment`], spec §5.1, with
+/// with `Q` the cubic de Casteljau spherical Bézier curve ([`CubicSegment`], eqs. (2)–(3), with
 /// exact derivatives). The curve is
 /// analytic inside each segment, passes through `q_{i,0}` at `t = i`, and is **G¹** at every
 /// joint: the unit tangents agree and `X′(i⁺) = β₁ᵢ·X′(i⁻)` (C¹ where β₁ᵢ = 1). It is not C² on
 /// the sphere in general, even for β₁ = 1, β₂ = 0. On one great circle the angle is the
 /// Euclidean cubic Beta spline (β₁ = 1, β₂ = 0: the uniform cubic B-spline).
 ///
-/// # Corrections to the paper (spec §12.2)
+/// # Corrections to the paper (`docs/derivations.md#beta-square` and following)
 ///
 /// - The paper's eq. (14) drops the square of β₁ that eqs. (4)–(5) carry; β₁² is used
 ///   everywhere (only that reading satisfies the Beta constraints on a great circle).
@@ -239,11 +239,13 @@ pub struct SolveInfo {
 ///   search on `Σ dist(q_{i,0}, pᵢ)²` globalises it; when the search fails or the Jacobian is
 ///   singular, one Jacobi step is taken instead. Target: the largest interpolation error
 ///   below `residual_tolerance` (1e-12).
-/// - [`BetaSolver::Jacobi`]: the paper's iteration (19) in the robust form of spec §9.5,
+/// - [`BetaSolver::Jacobi`]: the paper's iteration (19) in the robust form of
+///   `docs/derivations.md#beta-solver`,
 ///   normalised, stopped by the paper's rule `Σ‖Δdᵢ‖² < tolerance`, with an iteration limit and a
 ///   final check of the interpolation error against `residual_tolerance`.
 ///
-/// Decisions the paper leaves open (spec §9.5, §12.2 item 8): the Jacobi update is normalised
+/// Decisions the paper leaves open (`docs/derivations.md#beta-solver`): the Jacobi update is
+/// normalised
 /// (the literal update converges to the same points, more slowly); the residual is measured
 /// on the original points as the geodesic distance `dist(X(i), pᵢ)`; both solvers start from
 /// `dᵢ = pᵢ`. Newton has converged on every random problem where Jacobi did (and on some
@@ -256,9 +258,9 @@ pub struct SolveInfo {
 /// Either reports [`solve_info`](Self::solve_info) or fails with
 /// [`SplineError::Solve`]`(`[`SolveError::NoConvergence`]`)`; it never returns a curve that
 /// does not interpolate. Some data/parameter combinations have no solution (for example the
-/// paper's Example 2 with β₁ = 0.1 at the joint t = 2, spec §11.6).
+/// paper's Example 2 with β₁ = 0.1 at the joint t = 2, `docs/derivations.md#beta-examples`).
 ///
-/// The paper's examples (spec §10.2, §11.6; β₁ = 1, β₂ = 0, data normalised), measured
+/// The paper's examples (§5; β₁ = 1, β₂ = 0, data normalised), measured
 /// (tests `example_1_reference_values`, `paper_stopping_rule_reproduces_iteration_counts`, …):
 ///
 /// | example | solver, stopping rule | iterations | residual (rad) |
@@ -272,7 +274,7 @@ pub struct SolveInfo {
 /// | 2 | Jacobi, default | 29 | 2.1e-14 |
 /// | 2 | Newton | 3 | 1.0e-13 |
 ///
-/// Both give the auxiliary vertices of spec §11.6 (Example 1: d₁ = (−0.7517, −0.1143, 0.6496),
+/// Both give the same auxiliary vertices (Example 1: d₁ = (−0.7517, −0.1143, 0.6496),
 /// d₂ = (0.2070, 0.8090, 0.5501)). Newton stops as soon as the residual is below a quarter of
 /// `residual_tolerance`, hence 1e-13 rather than 1e-16 in Example 2. On random S² data with
 /// n = 1000 and neighbours 10°–60° apart, Newton takes 5 iterations and about 4 ms in a release
@@ -612,7 +614,7 @@ fn gamma(b1: f64, b2: f64) -> f64 {
     2.0 * (b1 + 1.0) / (b2 + 2.0 * b1 * (b1 + 1.0))
 }
 
-/// `η, ω` per arc and `δ` per point (spec §9.4).
+/// `η, ω` per arc and `δ` per point (`docs/derivations.md#beta-system`).
 fn shape_constants(beta1: &[f64], gamma: &[f64]) -> Shape {
     let arcs = beta1.len() - 1;
     let (mut eta, mut omega) = (Vec::with_capacity(arcs), Vec::with_capacity(arcs));

@@ -11,7 +11,7 @@ use crate::manifold::{Manifold, renormalize};
 use crate::slerp_jet::{FixedArc, ScalarJet, VJet, slerp_jet_vec, slerp_point};
 
 /// A spherical Bézier curve of degree `n ≥ 1` on any sphere, by de Casteljau's algorithm with
-/// geodesic interpolation (Shoemake; spec §5.1, seeds 003 eqs. (2)–(3) and 004 "de Casteljau").
+/// geodesic interpolation (Shoemake 1985; in this form also Yang et al. 2021, eqs. (2)–(3)).
 ///
 /// With control points `p₀ … pₙ` and `G[p, q](s)` the slerp (no sign flips):
 ///

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! Catmull-Rom splines on spheres: piecewise cubic spherical Bézier curves whose inner control
-//! points come from central differences of the keys (textbook construction, seed 001 §9.1–9.3).
+//! points come from central differences of the keys (Gortler 2012, §9.1–9.3).
 
 use crate::bezier::CubicSegment;
 use crate::curve::{Curve, Jet, Side};
@@ -15,7 +15,8 @@ use crate::slerp_jet::ScalarJet;
 
 /// A Catmull-Rom spline through `c₀ … cₙ` (n ≥ 1) steered by two extra end points: the input is
 /// `c₋₁, c₀, …, cₙ, cₙ₊₁` (n + 3 points); `c₋₁` and `cₙ₊₁` set the end tangents and are not
-/// interpolated. Knots `t₀ < … < tₙ` belong to `c₀ … cₙ` (default `0, 1, …, n`). Spec §7.
+/// interpolated. Knots `t₀ < … < tₙ` belong to `c₀ … cₙ` (default `0, 1, …, n`). Source: Gortler
+/// (2012), *Foundations of 3D Computer Graphics*, §9.2–9.3.
 ///
 /// Segment `i` on `[tᵢ, tᵢ₊₁]` (width `hᵢ`, `τ = (t − tᵢ)/hᵢ`) is the cubic de Casteljau curve
 /// with control points `cᵢ, dᵢ, eᵢ, cᵢ₊₁` (6 slerps, [`CubicSegment`]), where `dᵢ`, `eᵢ` step
@@ -30,10 +31,11 @@ use crate::slerp_jet::ScalarJet;
 ///
 /// - [`try_new`](Self::try_new) (any sphere): `Tᵢ = (log_{cᵢ}(cᵢ₊₁) − log_{cᵢ}(cᵢ₋₁))/Wᵢ`, the
 ///   intrinsic central difference.
-/// - [`try_new_quaternion`](Self::try_new_quaternion) (S³, the textbook rule of seed 001 §9.3):
+/// - [`try_new_quaternion`](Self::try_new_quaternion) (S³, the rule of Gortler (2012), §9.3):
 ///   `Tᵢ = log(Xᵢ)·cᵢ/Wᵢ` with `Xᵢ = cᵢ₊₁·cᵢ₋₁⁻¹`, replaced by `−Xᵢ` when its scalar part is
-///   negative (short-path rule, applied to the base of both `dᵢ` and `eᵢ₋₁`, spec §12.3). For
-///   uniform knots this is `dᵢ = Xᵢ^(1/6)·cᵢ`, `eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁`, exactly the seed.
+///   negative (short-path rule, applied to the base of both `dᵢ` and `eᵢ₋₁`,
+///   `docs/derivations.md#catmull-rom`). For uniform knots this is `dᵢ = Xᵢ^(1/6)·cᵢ`,
+///   `eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁`, exactly the book's rule.
 ///
 /// Both rules agree with each other (and with the scalar Catmull-Rom spline of the angles) when
 /// all points lie on one great circle at angles αₖ with |αₖ₊₁ − αₖ₋₁| < π/2 (so that the
@@ -156,7 +158,7 @@ impl<P: Manifold> CatmullRom<P> {
 }
 
 impl CatmullRom<UnitQuat> {
-    /// Builds the quaternion spline with the textbook tangent rule of seed 001 §9.3:
+    /// Builds the quaternion spline with the tangent rule of Gortler (2012), §9.3:
     /// `dᵢ = Xᵢ^(hᵢ/(3Wᵢ))·cᵢ`, `eᵢ = Xᵢ₊₁^(−hᵢ/(3Wᵢ₊₁))·cᵢ₊₁` with `Xᵢ = ±cᵢ₊₁·cᵢ₋₁⁻¹` (sign
     /// making the scalar part non-negative). Arguments and errors as [`try_new`](Self::try_new).
     ///

@@ -20,9 +20,9 @@ pub(crate) const COINCIDENT_TOLERANCE: f64 = 1e-14;
 /// The circle of a sphere through three points `p₁, p₂, p₃`, oriented so that it meets them in
 /// this order, with the arc `p₁ → p₂ → p₃`.
 ///
-/// On S² this is Procedure C3 of spec `pobegailo-s2.md` §5.2 (monograph §8.2, Procedures
-/// 8.1–8.3); on S³ the orientation circle of spec `pobegailo-s3.md` Algorithm 3 (monograph §9.2).
-/// Both are computed by the planar construction of Algorithm 3, which works on every sphere and
+/// On S² this is the circle of Pobegailo (2019), §8.2, Procedures 8.1–8.3; on S³ the orientation
+/// circle of §9.2, Procedures 9.1–9.2. Both are computed by a planar construction in the ambient
+/// space (`docs/derivations.md#pobegailo-9-2`), which works on every sphere and
 /// stays accurate when the points are nearly on a great circle (the book's ternary-product
 /// construction loses accuracy as `ε/|X|` there):
 ///
@@ -36,7 +36,8 @@ pub(crate) const COINCIDENT_TOLERANCE: f64 = 1e-14;
 /// ```
 ///
 /// `𝒢` is the one-parameter rotation group whose orbits include the circle (on S² it is
-/// `R(â, θ)` with `â = a × b`, the axis of (8.1); on S³ the normative reading of A-17). `φ` and
+/// `R(â, θ)` with `â = a × b`, the axis of (8.1); on S³ the reading of
+/// `docs/derivations.md#pobegailo-9-3`). `φ` and
 /// `ψ` are central angles at the circle's own centre, `0 < φ`, `0 < ψ`, `φ + ψ < 2π`.
 ///
 /// # Degenerate cases

@@ -147,10 +147,10 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// Pobegailo's Cⁿ corner smoothing of the great-circle polyline `P₀ → P₁ → … → P_M` on a sphere,
 /// with simple rotations (the S² construction; also valid on S³ and S^m).
 ///
-/// Source: the monograph (seed 002) §8.5–8.8 (eq. 8.19–8.22, Algorithm 8.2); spec
-/// `pobegailo-s2.md` §8, §9 and the several-corner extension §9.4 **\[I\]** (the book treats one
-/// corner). Edge `j` is the minor great-circle arc `P_j → P_{j+1}` with angle `Θ_j` and rotation
-/// group `R_j` (`R(ê_j, ·)` on S²). Each interior vertex `P_j` gets a corner blend that starts
+/// Source: Pobegailo (2019), §8.5–8.8 (eqs. (8.19)–(8.22), Algorithm 8.2), extended to several
+/// corners (the book treats one; `docs/derivations.md#pobegailo-corners`). Edge `j` is the minor
+/// great-circle arc `P_j → P_{j+1}` with angle `Θ_j` and rotation group `R_j` (`R(ê_j, ·)` on S²).
+/// Each interior vertex `P_j` gets a corner blend that starts
 /// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`):
 ///
 /// ```text
@@ -164,7 +164,8 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// With `f = 0.5` consecutive corner blends meet directly. The corner blend does not in general
 /// pass through `P_j`; for a straight vertex (continuing on the same great circle) it does.
 ///
-/// **Correction [B†].** The printed (8.21) applies the rotations to the cut point `Q₁`; the
+/// **Correction** (`docs/derivations.md#pobegailo-8-21`). The printed (8.21) applies the
+/// rotations to the cut point `Q₁`; the
 /// corner segment then misses `Q₁` and `Q₂`. The corner point `P_j` is used, as in (8.19).
 /// The inner weight is `w₁,ₙ(1 − u)`, not `w₂,ₙ(u)`.
 ///
@@ -300,8 +301,8 @@ impl<P: Manifold> Curve for CornerBlend<P> {
 /// Pobegailo's Cⁿ corner smoothing of an orientation polyline `q₀ → q₁ → … → q_M` of unit
 /// quaternions, with the rotations applied in the base frame (left multiplication).
 ///
-/// Source: the monograph (seed 002) §9.5–9.8 (eq. 9.18–9.21); spec `pobegailo-s3.md`
-/// Algorithm 6, extended to several corners as in `pobegailo-s2.md` §9.4 **\[I\]**. Edge `j` is
+/// Source: Pobegailo (2019), §9.5–9.8 (eqs. (9.18)–(9.21)), extended to several corners as for
+/// [`CornerBlend`] (`docs/derivations.md#pobegailo-corners`). Edge `j` is
 /// the great-circle arc of S³ from `q_j` to `q_{j+1}`, `e_{n_j}(s)·q_j` with
 /// `e_n(s) = cos s + sin s·n` and `s ∈ [0, Ω_j]` (`Ω_j` the angle on S³, half the rotation angle;
 /// this is slerp; keys are used as given, so canonicalise with [`unflip`](crate::unflip) for the
@@ -312,8 +313,9 @@ impl<P: Manifold> Curve for CornerBlend<P> {
 /// ```
 ///
 /// which is `Rot(n_j, ·)·Rot(n_{j−1}, ·)·P_j` of the book with the base point corrected from
-/// `Q₁` to `P₂` (A-22). Durations and continuity as for [`CornerBlend`]; the first edge is
-/// traversed at unit speed on S³ (angular velocity of magnitude 2). The angular velocity is
+/// `Q₁` to `P₂` (`docs/derivations.md#pobegailo-8-21`). Durations and continuity as for
+/// [`CornerBlend`]; the first edge is traversed at unit speed on S³ (angular velocity of magnitude
+/// 2). The angular velocity is
 /// constant on the edges.
 ///
 /// Unlike [`CornerBlend<UnitQuat>`], whose corner uses simple rotations of ℝ⁴, this is the

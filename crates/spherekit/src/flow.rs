@@ -30,8 +30,9 @@ pub(crate) trait Flow<V>: Clone + core::fmt::Debug {
 /// G(θ)x = x + (cos θ − 1)·((x·a)a + (x·b)b) + sin θ·((x·a)b − (x·b)a),   K x = (x·a)b − (x·b)a
 /// ```
 ///
-/// On ℝ³ it is the rotation `R(a × b, θ)` (spec `pobegailo-s2.md` §1.2); on ℝ⁴ it is the
-/// `G_{a,b}` of spec `pobegailo-s3.md` §2.5(d).
+/// On ℝ³ it is the rotation `R(a × b, θ)` (Pobegailo (2019), §3.3–3.4); on ℝ⁴ it is the simple
+/// rotation in the plane `span{a, b}`, a one-parameter subgroup of SO(4) whose orbits include
+/// every circle of S³ in a plane parallel to `span{a, b}` (`docs/derivations.md#pobegailo-9-2`).
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PlaneRotation<V> {
     pub(crate) a: V,

@@ -81,7 +81,7 @@ pub struct GammaJoint {
     pub first_derivative_jump: f64,
     /// `|S″(uⱼ⁺) − S″(uⱼ⁻)|` from the exact one-sided jets.
     pub second_derivative_jump: f64,
-    /// The residual of the general-spacing C² condition (spec §8.5),
+    /// The residual of the general-spacing C² condition (`docs/derivations.md#gamma-c2-general`),
     /// `Aᵢ/Δᵢ₋₁² + Rᵢ/Δᵢ₋₂² − Lᵢ/(Δᵢ₋₂Δᵢ₋₁)` with `i = j + 1`; the second-derivative jump is
     /// `6·b₃ⱼ·residual`, so its norm is 6 × this norm.
     pub general_residual: DVec3,
@@ -97,8 +97,8 @@ pub struct GammaJoint {
     pub uniform: bool,
 }
 
-/// The Gamma quaternion spline of Chen, Wang, Liu, He and Zhou (2022) (seed 000 §3; spec
-/// `papers.md` §8), with general knot spacings.
+/// The Gamma quaternion spline of Chen, Wang, Liu, He and Zhou (2022), §3, with general knot
+/// spacings.
 ///
 /// Inputs: auxiliary vertices `d₀ … dₗ₊₂` on S³ (l ≥ 1 segments), knots `u₀ < … < uₗ` with
 /// spacings `Δᵢ = uᵢ₊₁ − uᵢ`, shape parameters `γ₁ … γₗ₋₁ > 0`. With `G[p, q](s) =
@@ -125,9 +125,10 @@ pub struct GammaJoint {
 /// `3/(Δᵢ₋₁ + Δᵢ)·b₃ᵢ·log(b₃ᵢ₋₁⁻¹ b₃ᵢ₊₁)`. **Not C² in general**, even for `γ = 1` (unlike the
 /// Euclidean Gamma spline); it is C² with `γ = 1` when all `dₖ` lie on one great circle of S³.
 /// [`joint_report`](Self::joint_report) gives, per joint, the residual of the paper's C² condition
-/// (5) and of the general-spacing condition of the spec (§8.5), whose norm × 6 is the jump of S″.
+/// (5) and of the general-spacing condition (`docs/derivations.md#gamma-c2-general`), whose
+/// norm × 6 is the jump of S″.
 ///
-/// # Corrections to the paper (spec §12.1)
+/// # Corrections to the paper (`docs/derivations.md#gamma-knots` and following)
 ///
 /// - The paper says "uniform knots" but keeps `Δᵢ` everywhere; general spacings are supported.
 ///   Its condition (5) is the C² condition only when the two spacings at the joint are equal.
@@ -361,7 +362,8 @@ fn right_weight(knots: &Knots, gamma: &[f64], i: usize) -> f64 {
     }
 }
 
-/// The control vertices `b₀ … b₃ₗ` (spec §8.3). The edges `dₖdₖ₊₁` are known not to be antipodal.
+/// The control vertices `b₀ … b₃ₗ` (eqs. (2)–(4) with the boundary convention `γ₀Δ₋₁ = γₗΔₗ = 0`).
+/// The edges `dₖdₖ₊₁` are known not to be antipodal.
 fn control_vertices(
     d: &[UnitQuat],
     knots: &Knots,

@@ -241,7 +241,7 @@ const STACK_DEGREE: usize = 16;
 /// quaternion ones without a half-angle factor (`exp(v) = cos|v| + sin|v|/|v|·v`). Derivatives
 /// are exact: `d/dt exp(ω β) = exp(ω β)·ω β′`, combined over the factors by the product rule.
 ///
-/// Properties (spec `papers.md` §5.2–5.3, seed 000 §2.2): `q(0) = q₀`, `q(1) = qₙ`,
+/// Properties (Kim, Kim & Shin 1995; Chen et al. 2022, §2.2, Lemma 2): `q(0) = q₀`, `q(1) = qₙ`,
 /// `q′(0) = n·q₀ ω₁`, `q′(1) = n·qₙ ωₙ`; `n = 1` is slerp; left and right multiplication of all
 /// controls by fixed unit quaternions multiplies the curve the same way. It is **not** the
 /// de Casteljau (repeated slerp) spherical Bézier curve in general; the two coincide when all
@@ -410,7 +410,8 @@ impl Curve for BezierKim {
 /// Derivatives are exact (product rule over the three factors). Controls are used as given (no
 /// sign flips; see [`unflip`](crate::unflip)).
 ///
-/// Source: Kim, Kim and Shin (1995), as cited by seed 000 §1; spec `papers.md` §5.2.
+/// Source: Kim, Kim & Shin (1995), "A general construction scheme for unit quaternion curves with
+/// simple high order derivatives", SIGGRAPH '95, doi:10.1145/218380.218486.
 ///
 /// # Examples
 ///

@@ -41,8 +41,10 @@
 //! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
 //! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline | Cⁿ |
 //!
-//! Each type's documentation gives the formula, its source (the seed papers and the
-//! specification distilled from them) and the corrections the sources needed. The
+//! Each type's documentation gives the formula, its source (the publication, with section and
+//! equation numbers) and the corrections the sources needed. The repository's
+//! `docs/references.md` lists the publications and `docs/derivations.md` states the project's
+//! own derivations and every correction of a source, each with the tests that pin it. The
 //! [`continuity`] report measures the jumps of a curve's point, velocity and acceleration at
 //! its joints from the exact one-sided jets.
 //!

@@ -4,17 +4,18 @@
 //! Conversions between unit quaternions and the other parametrizations of rotations: rotation
 //! matrices, axis–angle, Rodrigues parameters (finite rotation vectors) and Euler parameters.
 //!
-//! Source: the monograph of Pobegailo (seed 002), chapters 3–4, as corrected in the foundations
-//! spec (`pobegailo-foundations.md` §2.3–2.10). The book's misprints that matter here, and the
-//! readings followed instead:
+//! Source: Pobegailo (2019), chapters 3–4 (see `docs/references.md`). The book's misprints that
+//! matter here, and the readings followed instead (each stated in full in `docs/derivations.md`):
 //!
 //! - (4.12), the matrix of the Rodrigues parameters, has the signs of the `r₃` terms at (1,2)
-//!   and (2,1) exchanged and is not orthogonal; the corrected form is used (§2.8).
+//!   and (2,1) exchanged and is not orthogonal; the corrected form is used (§4.3;
+//!   `docs/derivations.md#pobegailo-4-12`).
 //! - (4.15)/(4.16), the composition of Rodrigues parameters, has the denominator `1 + r₁·r₂`;
-//!   the correct one is `1 − r₁·r₂` (§2.10).
+//!   the correct one is `1 − r₁·r₂` (§4.5; `docs/derivations.md#pobegailo-4-15`).
 //! - (3.16) and the Euler-parameter inverse of (4.13) lose signs or accuracy near a half turn;
-//!   the matrix → quaternion conversion uses the four-branch method of §2.5 instead, with the
-//!   antisymmetric differences signed for the standard matrix (3.46), not the transposed (3.41).
+//!   the matrix → quaternion conversion uses the four-branch method instead (adapted from §3.10),
+//!   with the antisymmetric differences signed for the standard matrix (3.46), not the transposed
+//!   (3.41) (`docs/derivations.md#pobegailo-3-41`).
 //!
 //! The rotation vector (axis × angle) conversions are [`UnitQuat::from_rotation_vector`] and
 //! [`UnitQuat::to_rotation_vector`].
@@ -90,10 +91,11 @@ impl core::error::Error for RotationError {}
 /// # Rotations
 ///
 /// Conversions to and from rotation matrices, axis–angle, Rodrigues parameters and Euler
-/// parameters (foundations spec §2.3–2.10). Matrices act on column vectors, `p ↦ R·p`, and
+/// parameters (Pobegailo (2019), §2.10, §3.10–3.13, §4.2–4.5). Matrices act on column vectors,
+/// `p ↦ R·p`, and
 /// `R(q)·p = q·p·q̄` ([`UnitQuat::rotate`]). `q` and `−q` give the same matrix.
 impl UnitQuat {
-    /// The rotation matrix of `q`, the standard active matrix (3.46) of §2.4:
+    /// The rotation matrix of `q`, the standard active matrix (3.46) of Pobegailo (2019), §3.12:
     ///
     /// ```text
     /// R = (q₀² − q·q) I + 2 q₀ K(q) + 2 q qᵀ
@@ -114,7 +116,7 @@ impl UnitQuat {
     /// let q = UnitQuat::from_axis_angle(DVec3::Z, core::f64::consts::FRAC_PI_2).unwrap();
     /// let r: DMat3 = q.to_rotation_matrix();
     /// assert!((r * DVec3::X - DVec3::Y).length() < 1e-15);
-    /// // Back by the robust four-branch method (§2.5), canonical sign q₀ ≥ 0.
+    /// // Back by the robust four-branch method, canonical sign q₀ ≥ 0.
     /// let back = UnitQuat::from_rotation_matrix(r).unwrap();
     /// assert!((back.as_dquat() - q.as_dquat()).length() < 1e-15);
     /// // A reflection is rejected.
@@ -135,7 +137,7 @@ impl UnitQuat {
         )
     }
 
-    /// The unit quaternion of a rotation matrix, by the four-branch method of §2.5, with the
+    /// The unit quaternion of a rotation matrix, by the four-branch method, with the
     /// sign chosen so that `q₀ ≥ 0`.
     ///
     /// ```text
@@ -150,7 +152,8 @@ impl UnitQuat {
     /// `q_m ≥ ½`: the division is always well conditioned and the result is accurate to machine precision for every angle,
     /// including half turns. (The book's single-branch inversion (4.13), `q₀ = ½√(1 + tr R)`,
     /// loses about half the digits near φ = π; and the book's (3.41)-based four-branch formulas
-    /// are for the transposed matrix and return the conjugate — §2.5, §2.6.) The result is
+    /// are for the transposed matrix and return the conjugate —
+    /// `docs/derivations.md#pobegailo-3-41`, `#pobegailo-3-16`.) The result is
     /// renormalised, so a matrix within the tolerance of a rotation gives an exact unit
     /// quaternion near it. At a half turn (`q₀ = 0`) the sign is the one with the largest
     /// component positive.
@@ -203,7 +206,7 @@ impl UnitQuat {
         Self::new_unchecked(DQuat::from_vec4(v))
     }
 
-    /// The rotation axis and angle, with the angle in `[0, π]` (§2.3):
+    /// The rotation axis and angle, with the angle in `[0, π]` (Pobegailo (2019), §2.10, §3.13):
     ///
     /// ```text
     /// φ = 2·atan2(|q|, |q₀|),   n = sign(q₀)·q/|q|
@@ -240,7 +243,8 @@ impl UnitQuat {
         (v * (sign / s), angle)
     }
 
-    /// The Rodrigues parameters (finite rotation vector) `r = tan(φ/2)·n = q/q₀` (§2.7, §2.8).
+    /// The Rodrigues parameters (finite rotation vector) `r = tan(φ/2)·n = q/q₀` (Pobegailo (2019),
+    /// §4.2–4.3).
     ///
     /// They do not depend on the sign of `q`. `r = 0` is the identity.
     ///
@@ -255,7 +259,7 @@ impl UnitQuat {
     /// use spherekit::{RotationError, UnitQuat, glam::DVec3, rodrigues_compose, rotation_matrix_from_rodrigues};
     /// use core::f64::consts::FRAC_PI_4;
     ///
-    /// // Golden value of §2.8 (corrected): R(e₃, π/4) ↦ r = (0, 0, √2 − 1).
+    /// // The book's example of §4.2–4.3, corrected: R(e₃, π/4) ↦ r = (0, 0, √2 − 1).
     /// let q = UnitQuat::from_axis_angle(DVec3::Z, FRAC_PI_4).unwrap();
     /// let r = q.to_rodrigues().unwrap();
     /// assert!((r - DVec3::new(0.0, 0.0, 2f64.sqrt() - 1.0)).length() < 1e-15);
@@ -284,7 +288,7 @@ impl UnitQuat {
     }
 
     /// The unit quaternion of the Rodrigues parameters `r = tan(φ/2)·n`, with `q₀ > 0`
-    /// (§2.8, (4.14)):
+    /// (Pobegailo (2019), §4.3, (4.14)):
     ///
     /// ```text
     /// q = (1 + r) / √(1 + |r|²)
@@ -303,7 +307,8 @@ impl UnitQuat {
         Self::try_new(DQuat::from_xyzw(r.x, r.y, r.z, 1.0)).map_err(|_| RotationError::NonFinite)
     }
 
-    /// The Euler parameters `(q₀, q₁, q₂, q₃) = (cos(φ/2), sin(φ/2)·n)` (§2.9), scalar first,
+    /// The Euler parameters `(q₀, q₁, q₂, q₃) = (cos(φ/2), sin(φ/2)·n)` (Pobegailo (2019), §4.4),
+    /// scalar first,
     /// with the sign chosen so that `q₀ ≥ 0` (so `φ ∈ [0, π]`).
     ///
     /// # Examples
@@ -312,7 +317,7 @@ impl UnitQuat {
     /// use spherekit::{UnitQuat, glam::DVec3};
     /// use core::f64::consts::FRAC_PI_8;
     ///
-    /// // Golden value of §2.9 (corrected): R(e₃, π/4) ↦ (cos π/8, 0, 0, sin π/8).
+    /// // The book's example of §4.4, corrected: R(e₃, π/4) ↦ (cos π/8, 0, 0, sin π/8).
     /// let q = UnitQuat::from_axis_angle(DVec3::Z, 2.0 * FRAC_PI_8).unwrap();
     /// let e = q.neg().to_euler_parameters();
     /// assert!((e[0] - FRAC_PI_8.cos()).abs() < 1e-16 && (e[3] - FRAC_PI_8.sin()).abs() < 1e-16);
@@ -374,7 +379,7 @@ fn check_rotation_matrix(m: &DMat3) -> Result<(), RotationError> {
 }
 
 /// The rotation matrix of the Rodrigues parameters `r = tan(φ/2)·n`: the corrected (4.12) of
-/// §2.8,
+/// Pobegailo (2019), §4.3 (`docs/derivations.md#pobegailo-4-12`),
 ///
 /// ```text
 /// R(r) = [(1 − |r|²) I + 2 r rᵀ + 2 K(r)] / (1 + |r|²)
@@ -406,7 +411,8 @@ pub fn rotation_matrix_from_rodrigues(r: DVec3) -> DMat3 {
     (DMat3::from_diagonal(DVec3::splat(diag)) + outer * 2.0 + k * (2.0 * w)) * (1.0 / n)
 }
 
-/// Composition of Rodrigues parameters (corrected (4.15)/(4.16) of §2.10): the parameters `r`
+/// Composition of Rodrigues parameters (corrected (4.15)/(4.16) of Pobegailo (2019), §4.5;
+/// `docs/derivations.md#pobegailo-4-15`): the parameters `r`
 /// of `q₁·q₂`, that is `R(r) = R(r₁)·R(r₂)` (first `r₂`, then `r₁`),
 ///
 /// ```text

@@ -13,26 +13,29 @@ use crate::error::SplineError;
 /// The smoothing polynomials `w₁,ₙ` ("run-up") and `w₂,ₙ` ("braking") of degree `2n + 1`, for a
 /// continuity order `n ≥ 1`.
 ///
-/// Source: the monograph (seed 002), §7.5–7.7; spec `pobegailo-s2.md` §3 and
-/// `pobegailo-s3.md` §3.2. They are the Bézier functions with ordinates
+/// Source: Pobegailo (2019), §7.5–7.7 (see `docs/references.md`). They are the Bézier functions
+/// with ordinates
 /// `(0, …, 0, (n+1)/(2n+1), …, 1)` and `(0, 1/(2n+1), …, n/(2n+1), 0, …, 0)` (`n + 1` zeros each):
 ///
 /// ```text
 /// w₁,ₙ(u) = Σ_{j=n+1}^{2n+1} j/(2n+1)·b_{j,2n+1}(u) = u·Sₙ(u)
 /// w₂,ₙ(u) = Σ_{j=1}^{n}      j/(2n+1)·b_{j,2n+1}(u) = u·(1 − Sₙ(u))
 /// Sₙ(u)   = Σ_{i=n}^{2n} b_{i,2n}(u),      b_{i,N}(u) = C(N,i)·(1−u)^{N−i}·uⁱ
-/// w₁,ₙ + w₂,ₙ = u                                          (linear precision, [D])
+/// w₁,ₙ + w₂,ₙ = u                                          (linear precision, derived)
 /// Sₙ′(u)  = 2n·C(2n−1, n−1)·u^{n−1}·(1−u)ⁿ
 /// w^{(k)} = u·S^{(k)} + k·S^{(k−1)}                       (Leibniz, for w₁; w₂ with 1 − Sₙ)
 /// ```
 ///
-/// Boundary behaviour (Theorems 4, 5 with the range of (7.18) corrected to `m = 1…n`):
+/// Boundary behaviour (Pobegailo (2019), §7.6, Theorems 4, 5, with the range of (7.18) corrected
+/// to `m = 1…n`; `docs/derivations.md#pobegailo-7-18`):
 /// `w₁(0) = 0`, `w₁(1) = 1`, `w₁′(1) = 1`, `w₁^{(m)}(0) = 0` for `m = 1…n` and `w₁^{(m)}(1) = 0` for
 /// `m = 2…n`; `w₂(0) = w₂(1) = 0`, `w₂′(0) = 1`, `w₂^{(m)}(0) = 0` for `m = 2…n` and
 /// `w₂^{(m)}(1) = 0` for `m = 1…n`. The order-`n+1` end derivatives are non-zero.
 ///
 /// **Correction.** The monograph prints `w₂,₂(u) = (1−u)²u³ + 4(1−u)u⁴`, which violates
-/// `w₂′(0) = 1`; the definition gives `(1−u)⁴u + 4(1−u)³u² = u − 6u³ + 8u⁴ − 3u⁵`, used here.
+/// `w₂′(0) = 1`; the definition gives `(1−u)⁴u + 4(1−u)³u² = u − 6u³ + 8u⁴ − 3u⁵`, used here
+/// (`docs/derivations.md#pobegailo-w22`; the identity `w₁ + w₂ = u`:
+/// `#pobegailo-linear-precision`).
 ///
 /// # Numerics
 ///
@@ -229,7 +232,7 @@ impl SmoothingPolynomials {
     }
 
     /// The blending operator of two curves on a (matrix or quaternion) Lie group, Theorem 8 of
-    /// the monograph (§7.8, eq. 7.25), with exact first and second derivatives:
+    /// Pobegailo (2019), §7.8, eq. (7.25), with exact first and second derivatives:
     ///
     /// ```text
     /// g(u)  = A·B,   A = g₁(w₁,ₙ(u)),   B = g₂(w₂,ₙ(u))

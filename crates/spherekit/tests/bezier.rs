@@ -1,7 +1,7 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Spherical Bézier curves by de Casteljau (spec §5.1) and the differentiated slerp.
+//! Spherical Bézier curves by de Casteljau (Shoemake 1985) and the differentiated slerp.
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 

@@ -1,8 +1,8 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Catmull-Rom splines (spec §7): the intrinsic rule on any sphere and the textbook quaternion
-//! rule on S³, uniform and non-uniform knots.
+//! Catmull-Rom splines (Gortler 2012, §9.2–9.3): the intrinsic rule on any sphere and the textbook
+//! quaternion rule on S³, uniform and non-uniform knots.
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 
@@ -110,7 +110,7 @@ fn s3_textbook_rule() {
             }
             qv(pts[i + 1], x.log() / (e[i + 2] - e[i]))
         });
-        // Uniform knots: dᵢ = Xᵢ^(1/6)·cᵢ and eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁ exactly as in the seed.
+        // Uniform knots: dᵢ = Xᵢ^(1/6)·cᵢ and eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁ exactly as in the book.
         if c.joints()[1] == 1.0 {
             for i in 0..5 {
                 let x = |j: usize| {

@@ -1,7 +1,7 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! The Gamma quaternion spline (seed 000; spec `papers.md` §8, §10.1, §11.5, §12.1).
+//! The Gamma quaternion spline (Chen et al. 2022, §3–4; corrections in `docs/derivations.md`).
 
 #![allow(clippy::unwrap_used, reason = "tests: a panic is the failure report")]
 
@@ -60,7 +60,7 @@ fn example2_formula_reading() {
     let s = gamma(example2(), None, Gammas::default());
     let b = s.controls();
     assert_eq!(b.len(), 7);
-    // Spec §11.5, "our result (paper's formulas)".
+    // Recomputed from the paper's formulas (`docs/derivations.md#gamma-example-2`).
     let expected = [
         [-0.9632, -0.1086, 0.2011, 0.1414],
         [0.9023, 0.1049, 0.3609, -0.2112],
@@ -132,7 +132,7 @@ fn example2_paper_reading_reproduces_the_table() {
             s.controls()[k].to_wxyz()
         );
     }
-    // Unrounded values of the shifted reading (spec §11.5).
+    // Unrounded values of the shifted reading (`docs/derivations.md#gamma-example-2`).
     assert!(
         off(s.controls()[4], [0.78035, -0.34688, -0.33884, -0.39486]) < 1e-5,
         "b4"
@@ -304,7 +304,7 @@ fn endpoints_and_segments_are_kim_cubics() {
     assert_eq!(s.eval(u[4] + 5.0), d[6]);
 }
 
-/// The Euclidean (scalar) Gamma spline control points of spec §8.1.
+/// The Euclidean (scalar) Gamma spline control points (Chen et al. 2022, §2.3; Boehm 1987).
 fn scalar_gamma(v: &[f64], knots: &[f64], g: &[f64]) -> Vec<f64> {
     let l = knots.len() - 1;
     let dl = |i: usize| knots[i + 1] - knots[i];

@@ -41,7 +41,7 @@ fn check_derivatives<C: Curve<Point = UnitQuat>>(c: &C, ts: &[f64]) {
     }
 }
 
-/// De Casteljau spherical Bézier by repeated slerp (spec §5.1).
+/// De Casteljau spherical Bézier by repeated slerp (Shoemake 1985).
 fn de_casteljau(ctrl: &[UnitQuat], t: f64) -> UnitQuat {
     let mut p = ctrl.to_vec();
     while p.len() > 1 {

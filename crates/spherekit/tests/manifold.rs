@@ -211,7 +211,7 @@ fn exp_and_log_of_quaternions() {
             DVec3::new(rng.normal(), rng.normal(), rng.normal()).normalize() * rng.range(0.0, 3.1);
         assert_close(&UnitQuat::exp(v).log(), &v, 1e-13, "log(exp v) = v");
     }
-    // Near the identity, relative accuracy 1e-12 (spec foundations §5 item 24).
+    // Near the identity, relative accuracy 1e-12.
     for eps in [1e-3_f64, 1e-8] {
         let n = DVec3::new(1.0, 2.0, 2.0) / 3.0;
         let q = UnitQuat::try_new(DQuat::from_vec4((n * eps.sin()).extend(eps.cos()))).unwrap();

@@ -1,9 +1,9 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! The monograph's printed forms that the specs correct, each shown to fail the property the
-//! corrected form (used by the library) satisfies. The w₂,₂ and (8.21)/(9.20) cases are in
-//! `pobegailo_s2.rs` / `pobegailo_s3.rs`.
+//! The printed forms of Pobegailo (2019) that `docs/derivations.md` corrects, each shown to fail
+//! the property the corrected form (used by the library) satisfies. The w₂,₂ and (8.21)/(9.20)
+//! cases are in `pobegailo_s2.rs` / `pobegailo_s3.rs`.
 
 #![allow(
     clippy::unwrap_used,
@@ -57,7 +57,7 @@ fn printed_arctan_angle_fails_for_obtuse_edges() {
     );
 }
 
-/// §7.10 prints the knot recurrence shifted by one index,
+/// §7.10 prints the knot recurrence shifted by one index (`docs/derivations.md#pobegailo-knots`),
 /// `Δ_i = (ψ_i/φ_i)·Δ_{i−1}`; Algorithm 8.1's `Δ_i = (ψ_{i−1}/φ_{i−1})·Δ_{i−1}` is C¹ (and Cⁿ).
 #[test]
 fn printed_knot_recurrence_breaks_continuity() {
@@ -76,8 +76,9 @@ fn printed_knot_recurrence_breaks_continuity() {
     assert!(jump > 1e-2, "printed knots: velocity jump {jump}");
 }
 
-/// §7.10's prose calls the backward circle (through `p_{i−1}, p_i, p_{i+1}`) the "first" one; with
-/// it under w₁,ₙ the segment ends following the wrong circle and the joint is not even C¹.
+/// §7.10's prose calls the backward circle (through `p_{i−1}, p_i, p_{i+1}`) the "first" one
+/// (`docs/derivations.md#pobegailo-7-10-order`); with it under w₁,ₙ the segment ends following the
+/// wrong circle and the joint is not even C¹.
 #[test]
 fn printed_circle_order_breaks_continuity() {
     let pts = walk();
@@ -113,7 +114,8 @@ fn printed_circle_order_breaks_continuity() {
     );
 }
 
-/// The ternary product `X(P, Q, R)` with the corrected sign of (2.13).
+/// The ternary product `X(P, Q, R)` with the corrected sign of (2.13)
+/// (`docs/derivations.md#pobegailo-2-13`).
 fn ternary(p: DQuat, q: DQuat, r: DQuat) -> DQuat {
     let (pv, qv, rv) = (p.xyz(), q.xyz(), r.xyz());
     let v = -p.w * qv.cross(rv) - q.w * rv.cross(pv) - r.w * pv.cross(qv);
@@ -125,8 +127,9 @@ fn rot(a: DVec3, theta: f64, v: DVec3) -> DVec3 {
     a * a.dot(v) + (v - a * a.dot(v)) * c + a.cross(v) * s
 }
 
-/// Procedure 9.4 as printed applies circle i−1's rotation in circle i's frame `N_i`: it
-/// interpolates but has a velocity jump at t₁; the frame-consistent form (the library) is C².
+/// Procedure 9.4 as printed applies circle i−1's rotation in circle i's frame `N_i`
+/// (`docs/derivations.md#pobegailo-9-4`): it interpolates but has a velocity jump at t₁; the
+/// frame-consistent form (the library) is C².
 #[test]
 fn printed_procedure_9_4_is_only_c0() {
     let book = ternary(
@@ -191,7 +194,7 @@ fn printed_procedure_9_4_is_only_c0() {
     assert!(jump > 1e-2, "literal Procedure 9.4: velocity jump {jump}");
 }
 
-/// (2.13) as printed has `+q₀(r × p)`: it misses the book's own example and is not
+/// (2.13) as printed has `+q₀(r × p)`: it misses the book's own example and is not
 /// orthogonal to its factors; the corrected (all-minus) form, the 4×4 determinant's expansion,
 /// is both.
 #[test]

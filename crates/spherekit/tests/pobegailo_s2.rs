@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! Pobegailo's smoothing polynomials, circle blending and corner smoothing on S²
-//! (spec `pobegailo-s2.md`).
+//! (Pobegailo 2019, chapters 7–8; corrections in `docs/derivations.md`).
 
 #![allow(
     clippy::unwrap_used,
@@ -31,7 +31,7 @@ fn close3(a: DVec3, b: [f64; 3], tol: f64) {
     assert!((a - b).length() < tol, "{a:?} vs {b:?}");
 }
 
-/// R(â, θ)v by Rodrigues (spec §1.2).
+/// R(â, θ)v by Rodrigues' formula (Pobegailo 2019, §3.3–3.4).
 fn rot(a: DVec3, theta: f64, v: DVec3) -> DVec3 {
     let (s, c) = theta.sin_cos();
     a * a.dot(v) + (v - a * a.dot(v)) * c + a.cross(v) * s
@@ -62,11 +62,11 @@ fn poly_eval(coeffs: &[f64], u: f64) -> f64 {
     coeffs.iter().rev().fold(0.0, |acc, c| acc * u + c)
 }
 
-// ---------------------------------------------------------------- smoothing polynomials (§3)
+// ------------------------------------------------------------ smoothing polynomials (§7.5–7.7)
 
 #[test]
 fn smoothing_reference_values() {
-    // §3.6
+    // Reference values, computed independently in higher precision.
     let table = [
         (
             1,
@@ -95,7 +95,7 @@ fn smoothing_reference_values() {
 
 #[test]
 fn smoothing_monomial_forms() {
-    // §3.3, n = 1…5, values and the first three derivatives.
+    // The explicit polynomials, n = 1…5, values and the first three derivatives.
     let w1: [&[f64]; 5] = [
         &[0.0, 0.0, 2.0, -1.0],
         &[0.0, 0.0, 0.0, 6.0, -8.0, 3.0],
@@ -141,7 +141,7 @@ fn smoothing_monomial_forms() {
 
 #[test]
 fn smoothing_boundary_derivatives_and_tightness() {
-    // §3.4 table of order-(n+1) end derivatives.
+    // Order-(n+1) end derivatives (Theorems 4, 5 of §7.6).
     let tight = [
         (4.0, -2.0),
         (36.0, 24.0),
@@ -183,7 +183,8 @@ fn smoothing_boundary_derivatives_and_tightness() {
         }
         // Degree 2n + 1: the derivative of order 2n + 2 vanishes.
         assert_eq!(w.w1_derivative(0.3, 2 * n + 2), 0.0, "degree");
-        // Identity w1 + w2 = u and the value at 1/2 (§3.2).
+        // Identity w1 + w2 = u (`docs/derivations.md#pobegailo-linear-precision`) and the value at
+        // 1/2.
         for j in 0..=16 {
             let u = f64::from(j) / 16.0;
             assert!((w.w1(u) + w.w2(u) - u).abs() < 1e-15, "w1 + w2 = u");
@@ -252,7 +253,7 @@ fn smoothing_order_validation() {
     }
 }
 
-// ------------------------------------------------------------------ blending on SO(3) (§4.1)
+// ------------------------------------------------------------------ blending on SO(3) (§7.8)
 
 #[test]
 fn lie_group_blend_matches_end_derivatives_on_so3() {
@@ -305,7 +306,7 @@ fn lie_group_blend_matches_end_derivatives_on_so3() {
     }
 }
 
-// ------------------------------------------------------------------------ Procedure C3 (§5.2)
+// ---------------------------------------------------------- circle through three points (§8.2)
 
 #[test]
 fn circle_reference_values() {
@@ -387,7 +388,7 @@ fn circle_degenerate_cases() {
         c.center().length() < 1e-15 && (c.radius() - 1.0).abs() < 1e-15,
         "great circle"
     );
-    // Antipodal p1, p3: the great circle through them (spec example).
+    // Antipodal p1, p3: the great circle through them.
     let c = CircleArc::through(&S2Point::Z, &S2Point::X, &p(0.0, 0.0, -1.0)).unwrap();
     close3(c.axis(), [0.0, 1.0, 0.0], 1e-15);
     assert!(
@@ -422,7 +423,7 @@ fn circle_degenerate_cases() {
     );
 }
 
-// ----------------------------------------------------------------------- Algorithm A (§7)
+// ----------------------------------------------------------------------- Algorithm 8.1 (§8.4)
 
 #[test]
 fn arc_blend_reference_values() {
@@ -691,7 +692,7 @@ fn arc_blend_bad_input() {
     }
 }
 
-// ----------------------------------------------------------------------- Algorithm B (§9)
+// ----------------------------------------------------------------------- Algorithm 8.2 (§8.8)
 
 #[test]
 fn corner_blend_reference_values() {
@@ -869,7 +870,7 @@ fn corner_blend_bad_input() {
 
 #[test]
 fn smoothing_matches_the_bernstein_definition_up_to_order_10() {
-    // §3.1: w1 = Σ_{j=n+1}^{2n+1} j/(2n+1)·b_{j,2n+1}, w2 = Σ_{j=1}^{n} j/(2n+1)·b_{j,2n+1}.
+    // §7.5: w1 = Σ_{j=n+1}^{2n+1} j/(2n+1)·b_{j,2n+1}, w2 = Σ_{j=1}^{n} j/(2n+1)·b_{j,2n+1}.
     let binom = |n: u64, k: u64| (0..k).fold(1.0, |c, i| c * (n - i) as f64 / (i + 1) as f64);
     for n in 1..=10_u64 {
         let w = SmoothingPolynomials::try_new(n as usize).unwrap();
@@ -912,7 +913,7 @@ fn corner_blend_backtracking_vertex_stays_finite_and_smooth() {
     }
 }
 
-/// Procedure C3 exactly as in the spec (§5.2, eq. 8.1–8.4 with the atan2 form).
+/// The circle through three points exactly as in §8.2 (eqs. (8.1)–(8.4), with the atan2 form).
 fn c3_book(p1: DVec3, p2: DVec3, p3: DVec3) -> (DVec3, f64, f64) {
     let a = (p3 - p2).cross(p1 - p2);
     let axis = a / a.length();
@@ -927,8 +928,8 @@ fn c3_book(p1: DVec3, p2: DVec3, p3: DVec3) -> (DVec3, f64, f64) {
 
 #[test]
 fn arc_blend_matches_an_independent_implementation_of_algorithm_a() {
-    // Algorithm A written directly from spec §7.3 (Rodrigues rotations, book C3, monomial w):
-    // the library agrees to 1e-13 everywhere, beyond the 9 printed digits of §11.2.
+    // Algorithm 8.1 written directly from the book (Rodrigues rotations, the circle of §8.2,
+    // monomial w): the library agrees to 1e-13 everywhere, beyond 9 digits of reference values.
     let pts = algorithm_a_points();
     let x: Vec<DVec3> = pts.iter().map(|q| q.as_dvec3()).collect();
     let tri: Vec<_> = (0..x.len() - 2)
@@ -965,7 +966,8 @@ fn arc_blend_matches_an_independent_implementation_of_algorithm_a() {
 
 #[test]
 fn corner_blend_matches_an_independent_implementation_of_algorithm_b() {
-    // Algorithm B (spec §9.2, corrected (8.21)) for one corner with λ = ¼, n = 2.
+    // Algorithm 8.2 (corrected (8.21), `docs/derivations.md#pobegailo-8-21`) for one corner with λ
+    // = ¼, n = 2.
     let (p1, p2, p3) = (
         p(1.0, 0.2, 0.1).as_dvec3(),
         p(0.1, 1.0, 0.3).as_dvec3(),

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! Pobegailo's orientation circles, arc-blend splines and corner smoothing on S³
-//! (spec `pobegailo-s3.md`).
+//! (Pobegailo 2019, chapter 9; corrections in `docs/derivations.md`).
 
 #![allow(
     clippy::unwrap_used,
@@ -109,8 +109,8 @@ fn orientation_circle_reference_values() {
 
 #[test]
 fn orientation_circle_on_a_great_circle() {
-    // Linearly dependent triple (the book's ternary product vanishes, A-16): the great-circle
-    // arc through the three points.
+    // Linearly dependent triple (the book's ternary product vanishes,
+    // `docs/derivations.md#pobegailo-9-2`): the great-circle arc through the three points.
     let a = q(1.0, 0.0, 0.0, 0.0).to_vector();
     let b = q(0.0, 0.6, 0.0, 0.8).to_vector();
     let on = |t: f64| UnitQuat::from_vector_unchecked(a * t.cos() + b * t.sin());
@@ -364,8 +364,8 @@ fn r3_points() -> Vec<UnitQuat> {
 fn orientation_corner_reference_values() {
     let pts = r3_points();
     close4(pts[2].to_vector(), [0.5, 0.5, 0.5, -0.5], 1e-15);
-    // The spec's knots are t1 = 0, t2 = 1; ours start with unit speed on S³, t2 = 3π/16, so
-    // spec(t) = ours(σt) and spec derivatives are σᵏ times ours.
+    // The reference values use knots t1 = 0, t2 = 1; ours start with unit speed on S³, t2 = 3π/16,
+    // so ref(t) = ours(σt) and reference derivatives are σᵏ times ours.
     let sigma = 3.0 * PI / 16.0;
     let samples = [
         [
@@ -461,7 +461,8 @@ fn orientation_corner_reference_values() {
 
 #[test]
 fn orientation_corner_printed_formula_misses_the_cut_points() {
-    // (9.20) as printed applies the rotations to Q₁ instead of P₂.
+    // (9.20) as printed applies the rotations to Q₁ instead of P₂
+    // (`docs/derivations.md#pobegailo-8-21`).
     let pts = r3_points();
     let c = CornerBlendS3::try_new(pts.clone(), 2, 0.25).unwrap();
     let k = c.knots();

@@ -1,7 +1,7 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Rotation conversions: the identities of the foundations spec §5 (items 10–19, 24), the
+//! Rotation conversions (Pobegailo 2019, chapters 3–4): standard identities, the
 //! book's golden values that are correct, and one negative test per corrected misprint.
 
 mod support;
@@ -43,7 +43,7 @@ fn skew(a: DVec3) -> DMat3 {
     )
 }
 
-/// exp(K(w)) = I + sinθ/θ·K + (1 − cosθ)/θ²·K² (§2.11), θ = |w| > 0.
+/// exp(K(w)) = I + sinθ/θ·K + (1 − cosθ)/θ²·K² (Pobegailo 2019, §4.6), θ = |w| > 0.
 fn exp_skew(w: DVec3) -> DMat3 {
     let t = w.length();
     let k = skew(w);
@@ -213,7 +213,7 @@ fn four_axis_angle_forms_agree() {
 
 #[test]
 fn quaternion_composition_formula_of_3_13() {
-    // cos(φ/2), sin(φ/2)n of Q₂Q₁ from the halves of Q₁ and Q₂ (§2.10).
+    // cos(φ/2), sin(φ/2)n of Q₂Q₁ from the halves of Q₁ and Q₂ (§3.13, §4.5).
     let mut rng = Rng::new(6);
     for _ in 0..TRIALS {
         let (n1, n2) = (rng.unit3(), rng.unit3());
@@ -254,7 +254,8 @@ fn golden_matrix_of_section_2_4() {
 // ---------------------------------------------------------------------------------------------
 // Items 12, 13: matrix → quaternion and axis–angle extraction.
 
-/// The single-branch (q₀-only) inversion, the book's Euler-parameter inverse (corrected, §2.9),
+/// The single-branch (q₀-only) inversion, the book's Euler-parameter inverse (§4.4, corrected:
+/// `docs/derivations.md#pobegailo-4-13`),
 /// without normalisation.
 fn q0_only_raw(m: DMat3) -> [f64; 4] {
     let w = 0.5 * (1.0 + entry(m, 0, 0) + entry(m, 1, 1) + entry(m, 2, 2)).sqrt();
@@ -651,7 +652,8 @@ fn rodrigues_matrix_and_cayley_factorization() {
             (vt - (v + r.cross(v + vt))).length() < 1e-13 * scale,
             "ṽ = v + r × (v + ṽ)"
         );
-        // Inverse formula of §2.8: r = (r₃₂ − r₂₃, r₁₃ − r₃₁, r₂₁ − r₁₂)/(1 + tr R).
+        // Inverse formula of §4.3 (sign corrected): r = (r₃₂ − r₂₃, r₁₃ − r₃₁, r₂₁ − r₁₂)/(1 + tr
+        // R).
         let tr1 = 1.0 + entry(m, 0, 0) + entry(m, 1, 1) + entry(m, 2, 2);
         let inv = DVec3::new(
             entry(m, 2, 1) - entry(m, 1, 2),
@@ -779,7 +781,7 @@ fn euler_parameters() {
         (golden[0] - FRAC_PI_8.cos()).abs() < 1e-16,
         "√(2 + √2)/2 = cos π/8"
     );
-    // The m = 0 inverse of §2.9 (with the division by q₀ and the corrected q₃ sign) returns Q.
+    // The m = 0 inverse of §4.4 (with the division by q₀ and the corrected q₃ sign) returns Q.
     assert!(
         quat_err_pm(q0_only_inverse(q.to_rotation_matrix()), q) < 1e-16,
         "Euler inverse"

@@ -1,7 +1,7 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Squad (spec §6), uniform and non-uniform knots.
+//! Squad (Shoemake 1987), uniform and non-uniform knots.
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 
@@ -114,7 +114,7 @@ fn derivatives_match_finite_differences() {
     }
 }
 
-/// Scalar squad of angles (the Euclidean analogue of §6 with lerps).
+/// Scalar squad of angles (the Euclidean analogue with lerps).
 fn scalar_squad(alpha: &[f64], knots: &[f64], t: f64) -> f64 {
     let n = alpha.len() - 1;
     let mut sigma = alpha.to_vec();
