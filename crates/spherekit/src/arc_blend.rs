@@ -128,9 +128,16 @@ pub(crate) fn check_neighbours<P: Manifold>(points: &[P], min: usize) -> Result<
 /// `max(|t₀|, |t_k|)/min_i (t_{i+1} − t_i) ≤` [`CONDITION_LIMIT`](Self::CONDITION_LIMIT) `= 1e8`:
 /// rounding `t` to `f64` then moves a segment's local parameter by at most about 1e-8. Long
 /// random sequences leave that range with the book's knots after a few hundred keys, while
-/// arc-length knots stay in it for any length of ordinary data (about `k·` mean step / shortest
-/// step). The warped timings slow the curve at a key to the slower of its two neighbours' mean
-/// speeds, so with `ArcLength` the speed is at most about 1 (exactly 1 on a circle).
+/// arc-length knots stay in it for any length of ordinary data (it is about `k ×` mean step /
+/// shortest step).
+///
+/// **Speed of the warped timings.** At a key the curve runs at the slower of its two
+/// neighbouring segments' mean speeds (module docs); inside a segment the speed follows the
+/// blend, which moves along two circle arcs of possibly very different lengths (a triple that
+/// turns back has a circle looping almost all the way round). With `ArcLength` the speed is
+/// exactly 1 on a circle and at the first and last keys; on a random walk of 10 000 directions
+/// with steps of 0.05–0.5 rad it has median 1.02, 80 % of the parameter between 0.57 and 1.97,
+/// and extremes 0.002 and 4.2 (test `arc_blend_ten_thousand_directions_used_to_fail` bounds it).
 ///
 /// # Examples
 ///
@@ -169,7 +176,8 @@ pub enum ArcBlendTiming {
     Book,
     /// Knots at the cumulative length of the circle arcs: segment `i` gets the mean of the
     /// lengths `ρ·angle` of its two arcs from `p_i` to `p_{i+1}` (on the circles of the triples
-    /// ending and starting there; the end segments have one arc). The speed is about 1. Fails
+    /// ending and starting there; the end segments have one arc), an approximate arc length.
+    /// The speed averages about 1 (see *Speed* above). Fails
     /// with [`SplineError::TimingNotRepresentable`] when an arc is too short to be added to the
     /// length before it in `f64`.
     ArcLength,
@@ -182,6 +190,18 @@ pub enum ArcBlendTiming {
 impl ArcBlendTiming {
     /// The largest `max(|t₀|, |t_k|)/min spacing` of well-conditioned knots (see the type docs).
     pub const CONDITION_LIMIT: f64 = 1e8;
+
+    /// The timing's name: `"auto"`, `"book"`, `"arc-length"`, `"uniform"` or `"knots"`.
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Auto => "auto",
+            Self::Book => "book",
+            Self::ArcLength => "arc-length",
+            Self::Uniform => "uniform",
+            Self::Knots(_) => "knots",
+        }
+    }
 }
 
 /// The time warp `u = σ(s) = s + a·w₂(s) + b·w₂(1 − s)` of one segment, `a = A − 1`,
@@ -738,5 +758,58 @@ impl<P: Manifold> ArcBlend<P> {
         }
         let u = self.warps.get(i).map_or(s, |w| w.value(self.poly, s));
         P::from_vector_unchecked(renormalize(self.segments[i].point(self.poly, u)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn warp_end_conditions_and_monotonicity() {
+        for n in 1..=MAX_BLEND_ORDER {
+            let poly = SmoothingPolynomials::try_new(n).unwrap_or_else(|e| panic!("{e}"));
+            for (a, b) in [
+                (1.0, 1.0),
+                (0.3, 1.0),
+                (1.0, 1e-9),
+                (1e-9, 1e-9),
+                (0.7, 0.2),
+            ] {
+                let w = Warp::new(a, b);
+                let (start, end) = (
+                    w.derivatives(poly, 0.0, n + 1),
+                    w.derivatives(poly, 1.0, n + 1),
+                );
+                assert!(
+                    start[0] == 0.0 && end[0] == 1.0,
+                    "σ(0) = 0, σ(1) = 1 exactly"
+                );
+                assert!(
+                    (start[1] - a).abs() < 1e-14 && (end[1] - b).abs() < 1e-14,
+                    "slopes"
+                );
+                for m in 2..=n {
+                    assert!(
+                        start[m].abs() < 1e-9 && end[m].abs() < 1e-9,
+                        "σ^({m}) = 0 at the ends"
+                    );
+                }
+                let jet = w.jet(poly, 0.37);
+                let d = w.derivatives(poly, 0.37, 2);
+                for k in 0..3 {
+                    assert!((jet[k] - d[k]).abs() < 1e-12, "jet and derivatives agree");
+                }
+                // σ′ ≥ A·B (module docs), on a fine grid.
+                for j in 0..=2000 {
+                    let s = f64::from(j) / 2000.0;
+                    let slope = w.derivatives(poly, s, 1)[1];
+                    assert!(
+                        slope >= a * b * (1.0 - 1e-12) - 1e-15,
+                        "σ′({s}) = {slope} (n = {n})"
+                    );
+                }
+            }
+        }
     }
 }

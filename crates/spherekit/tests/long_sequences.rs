@@ -19,7 +19,7 @@
 
 mod support;
 
-use spherekit::glam::DVec3;
+use spherekit::glam::{DQuat, DVec3};
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSpline, CatmullRom, CornerBlend,
     CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, KimBSpline,
@@ -367,7 +367,7 @@ fn arc_blend_co_circular_long_sequence_is_the_circle() {
     let axis = DVec3::new(0.3, -0.5, 0.8).normalize();
     let p0 = DVec3::new(0.9, 0.1, -0.2).normalize();
     let rot = |a: f64| {
-        let q = spherekit::glam::DQuat::from_axis_angle(axis, a);
+        let q = DQuat::from_axis_angle(axis, a);
         S2Point::try_new(q * p0).unwrap()
     };
     let mut g = Rng(11);
@@ -479,6 +479,7 @@ fn arc_blend_arc_length_timing_error_message() {
 /// The point sets of the arc-blend golden scenes keep the book's knots (their images depend on
 /// them).
 #[test]
+#[allow(clippy::approx_constant, reason = "the scenes' literal coordinates")]
 fn arc_blend_golden_scenes_keep_the_book_knots() {
     let s2: Vec<S2Point> = [
         [1.0, 0.0, 0.3],
