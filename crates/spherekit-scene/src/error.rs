@@ -111,6 +111,7 @@ fn spline_message(e: &SplineError) -> String {
             index + 2
         ),
         SplineError::Solve(e) => format!("params.solver: {e}"),
+        SplineError::TimingNotRepresentable { index, .. } => format!("points[{index}]: {e}"),
         // Errors added to the core later: its own words, which name no field.
         e => e.to_string(),
     }

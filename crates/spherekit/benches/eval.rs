@@ -3,7 +3,7 @@
 
 //! Evaluation and construction of every method on S³, 20 keys, 200 000 increasing parameters:
 //! one `eval` call per sample, `eval_many` and `jet_many` over the whole batch, and
-//! construction through 20 and 1 000 keys. `glam::DQuat::slerp` per call is the floor.
+//! construction through 20 and 1 000 keys (and 100 000 for the Pobegailo blends). `glam::DQuat::slerp` per call is the floor.
 //!
 //! `cargo bench -p spherekit --bench eval` (add `-- --warm-up-time 1 --measurement-time 2`
 //! while developing). Throughput is per sample, so criterion's "thrpt" is samples per second.
@@ -85,6 +85,21 @@ fn construction(c: &mut Criterion) {
             });
         }
     }
+    // Long sequences: the book's arc-blend knots are not representable there, so this is the
+    // arc-length timing with its time warps (and corner-blend, the other Pobegailo blend).
+    let n = 100_000;
+    let keys = data::keys_s3(n);
+    for m in curves::METHODS {
+        if m.name == "arc-blend" || m.name == "corner-blend" {
+            group.bench_with_input(BenchmarkId::new(m.name, n), &keys, |b, keys| {
+                b.iter(|| (m.build)(black_box(keys.clone())));
+            });
+        }
+    }
+    let points = data::points_s2(n, 60.0, 3);
+    group.bench_with_input(BenchmarkId::new("arc-blend S2", n), &points, |b, p| {
+        b.iter(|| curves::build_s2("arc-blend", black_box(p.clone())));
+    });
     group.finish();
 }
 

@@ -125,6 +125,24 @@ pub enum SplineError {
     /// An iterative solver (for example the interpolation solver of
     /// [`BetaSpline`](crate::BetaSpline)) did not reach its tolerance.
     Solve(SolveError),
+    /// The requested [`ArcBlendTiming`](crate::ArcBlendTiming) (`"book"` or `"arc-length"`)
+    /// gives point `index` no knot of its own in `f64`: the spacing before it is lost to
+    /// rounding next to the previous knot, or is outside
+    /// [`MIN_KNOT_SPACING`](crate::MIN_KNOT_SPACING) ..= [`MAX_KNOT_SPACING`](crate::MAX_KNOT_SPACING).
+    /// The other timings trace the same curve.
+    TimingNotRepresentable {
+        /// `"book"` or `"arc-length"`.
+        timing: &'static str,
+        /// Index of the point (its knot would be `knots[index]`).
+        index: usize,
+        /// The spacing `t_index − t_{index−1}` the timing asks for.
+        spacing: f64,
+        /// That spacing over the first one; for the book's knots, the product of the ratios
+        /// `ψ/φ` of the circles through the points before `index`.
+        ratio: f64,
+        /// The knot `t_{index−1}` of the previous point.
+        knot: f64,
+    },
 }
 
 impl fmt::Display for SplineError {
@@ -171,6 +189,36 @@ impl fmt::Display for SplineError {
                 index + 2
             ),
             Self::Solve(e) => write!(f, "{e}"),
+            Self::TimingNotRepresentable {
+                timing,
+                index,
+                spacing,
+                ratio,
+                knot,
+            } => {
+                let why = if !spacing.is_finite() || *spacing > crate::MAX_KNOT_SPACING {
+                    format!("above the largest spacing {:e}", crate::MAX_KNOT_SPACING)
+                } else if *spacing < crate::MIN_KNOT_SPACING {
+                    format!("below the smallest spacing {:e}", crate::MIN_KNOT_SPACING)
+                } else {
+                    format!(
+                        "lost to rounding next to the knot {knot:.6e} of point {}",
+                        index.saturating_sub(1)
+                    )
+                };
+                if *timing == "book" {
+                    write!(
+                        f,
+                        "the book's arc-blend knots cannot be represented at point {index}: the ratios ψ/φ of the circles before this point multiply to {ratio:.1e}, a knot spacing of {spacing:.1e}, {why}; use the arc-length or uniform timing, which trace the same curve"
+                    )
+                } else {
+                    write!(
+                        f,
+                        "the {timing} knots cannot be represented at point {index}: the segment from point {} has length {spacing:.1e}, {why}; use the uniform timing, which traces the same curve",
+                        index.saturating_sub(1)
+                    )
+                }
+            }
         }
     }
 }

@@ -116,7 +116,7 @@ mod sn;
 mod squad;
 
 pub use ambient::{Ambient, VecN};
-pub use arc_blend::{ArcBlend, MAX_BLEND_ORDER};
+pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
 pub use beta_spline::{
     BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
 };
