@@ -105,6 +105,16 @@ pub enum SplineError {
     /// An iterative solver (for example the interpolation solver of
     /// [`BetaSpline`](crate::BetaSpline)) did not reach its tolerance.
     Solve(SolveError),
+    /// The last and the first point of a closed curve are antipodal: the closing geodesic is
+    /// not unique.
+    AntipodalClosing,
+    /// A clamped end velocity cannot be used.
+    InvalidEndVelocity {
+        /// `true` for the velocity at the first key, `false` for the one at the last key.
+        start: bool,
+        /// What is wrong, for example `"is not tangent to the first key"`.
+        reason: &'static str,
+    },
 }
 
 impl fmt::Display for SplineError {
@@ -152,6 +162,13 @@ impl fmt::Display for SplineError {
                 index + 2
             ),
             Self::Solve(e) => write!(f, "params.solver: {e}"),
+            Self::AntipodalClosing => f.write_str(
+                "the last and the first point are antipodal: the closing geodesic is not unique",
+            ),
+            Self::InvalidEndVelocity { start, reason } => {
+                let which = if *start { "start" } else { "end" };
+                write!(f, "the {which} velocity {reason}")
+            }
         }
     }
 }
