@@ -53,6 +53,11 @@
 //! segments' mean rates and solves the interior ones). *Closed*: (2) at every key, indices
 //! mod `n`.
 //!
+//! **Not reversal symmetric.** Each segment is a cubic in the tangent space of its *first* key,
+//! so the keys and times reversed give a different curve (exactly the same only on a great
+//! circle); the difference shrinks like the cube of the step. scipy's `RotationSpline` has the
+//! same property.
+//!
 //! **Solving.** The unknowns are written in orthonormal frames of the tangent spaces that are
 //! parallel transported along the chain of geodesics (so `Mᵢ` becomes the symmetric
 //! `sinc θᵢ·I + (1 − sinc θᵢ)·êᵢêᵢᵀ` and `Nᵢ` its inverse; a closed chain picks up the
