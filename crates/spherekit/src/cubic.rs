@@ -76,7 +76,7 @@
 //!   angular acceleration, the block tridiagonal iteration): N. Mayorov, *Smooth attitude
 //!   interpolation*, 2019, the reference of scipy's `RotationSpline`
 //!   (<https://github.com/scipy/scipy/files/2932755/attitude_interpolation.pdf>);
-//!   P. Virtanen et al., *SciPy 1.0: fundamental algorithms for scientific computing in Python*,
+//!   P. Virtanen et al., *`SciPy` 1.0: fundamental algorithms for scientific computing in Python*,
 //!   Nature Methods 17, 261–272 (2020), <https://doi.org/10.1038/s41592-019-0686-2>.
 //! - Cubics in the tangent space at a key, the idea behind it: M.-J. Kim, M.-S. Kim,
 //!   S. Y. Shin, *A C²-continuous B-spline quaternion curve interpolating a given sequence of
@@ -188,7 +188,7 @@ struct Segment<V> {
 /// system, O(n) per step, to a relative residual ≤ 1e-12 ([`solve_info`](Self::solve_info)).
 ///
 /// Sources: N. Mayorov, *Smooth attitude interpolation* (2019), the reference of scipy's
-/// `RotationSpline`; P. Virtanen et al., *SciPy 1.0*, Nature Methods 17 (2020),
+/// `RotationSpline`; P. Virtanen et al., *`SciPy` 1.0*, Nature Methods 17 (2020),
 /// <https://doi.org/10.1038/s41592-019-0686-2>.
 ///
 /// # Domain and joints
@@ -346,7 +346,8 @@ impl<P: Manifold> CubicSpline<P> {
         for i in 0..nseg {
             geo.seg.push(SegConst::new(thetas[i], knots.width(i)));
             for a in 0..m {
-                geo.ehat.push(dot(frames.vector(i, a), &es[i * r..(i + 1) * r]));
+                geo.ehat
+                    .push(dot(frames.vector(i, a), &es[i * r..(i + 1) * r]));
             }
         }
         if closed && m > 0 {
@@ -538,7 +539,11 @@ impl<P: Manifold> CubicSpline<P> {
         let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
         let rho = v.length();
         let (sn, cs) = math::sin_cos(rho);
-        let sinc = if rho < 1e-4 { math::sinc(rho) } else { sn / rho };
+        let sinc = if rho < 1e-4 {
+            math::sinc(rho)
+        } else {
+            sn / rho
+        };
         P::from_vector_unchecked(renormalize(g.start.clone() * cs + v * sinc))
     }
 
@@ -550,7 +555,11 @@ impl<P: Manifold> CubicSpline<P> {
         let p = &g.start;
         let rho = v.length();
         let (sn, cs) = math::sin_cos(rho);
-        let sinc = if rho < 1e-4 { math::sinc(rho) } else { sn / rho };
+        let sinc = if rho < 1e-4 {
+            math::sinc(rho)
+        } else {
+            sn / rho
+        };
         let dsinc = sinc_deriv(rho);
         // The unit direction of v (zero for |v| ≈ 0, where every term it enters is O(|v|)).
         let e = if rho > 1e-150 {
@@ -614,7 +623,8 @@ fn check_velocity<P: Manifold>(
 fn sinc_deriv(x: f64) -> f64 {
     if x.abs() < 0.1 {
         let x2 = x * x;
-        x * (-1.0 / 3.0 + x2 * (1.0 / 30.0 + x2 * (-1.0 / 840.0 + x2 * (1.0 / 45360.0 - x2 / 3_991_680.0))))
+        x * (-1.0 / 3.0
+            + x2 * (1.0 / 30.0 + x2 * (-1.0 / 840.0 + x2 * (1.0 / 45360.0 - x2 / 3_991_680.0))))
     } else {
         let (s, c) = math::sin_cos(x);
         (x * c - s) / (x * x)
@@ -876,8 +886,8 @@ impl Geometry {
     fn to_segment_end(&self, seg: usize, y: &[f64], out: &mut [f64]) {
         let m = self.m;
         if self.is_seam(seg) {
-            for b in 0..m {
-                out[b] = (0..m).map(|a| self.hol[a * m + b] * y[a]).sum();
+            for (b, o) in out.iter_mut().enumerate().take(m) {
+                *o = (0..m).map(|a| self.hol[a * m + b] * y[a]).sum();
             }
         } else {
             out.copy_from_slice(y);
@@ -885,11 +895,11 @@ impl Geometry {
     }
 
     /// The inverse of [`to_segment_end`](Self::to_segment_end) (`H·y` across the seam).
-    fn from_segment_end(&self, seg: usize, y: &[f64], out: &mut [f64]) {
+    fn back_from_segment_end(&self, seg: usize, y: &[f64], out: &mut [f64]) {
         let m = self.m;
         if self.is_seam(seg) {
-            for a in 0..m {
-                out[a] = (0..m).map(|b| self.hol[a * m + b] * y[b]).sum();
+            for (a, o) in out.iter_mut().enumerate().take(m) {
+                *o = (0..m).map(|b| self.hol[a * m + b] * y[b]).sum();
             }
         } else {
             out.copy_from_slice(y);
@@ -921,7 +931,11 @@ impl Geometry {
             let fk = &mut f[k * m..(k + 1) * m];
             let mut scale = 0.0;
             if let Some(g) = self.fixed_row(k) {
-                let h = if k == 0 { self.seg[0].h } else { self.seg[k - 1].h };
+                let h = if k == 0 {
+                    self.seg[0].h
+                } else {
+                    self.seg[k - 1].h
+                };
                 let c = 4.0 / h;
                 for a in 0..m {
                     fk[a] = c * (xk[a] - g[a]);
@@ -949,7 +963,7 @@ impl Geometry {
                     for (ya, ea) in y.iter_mut().zip(e) {
                         *ya -= c6 * ea;
                     }
-                    self.from_segment_end(p, y, u);
+                    self.back_from_segment_end(p, y, u);
                     let c4 = 4.0 / sc.h;
                     for a in 0..m {
                         fk[a] += u[a] + c4 * xk[a];
@@ -1002,7 +1016,11 @@ impl Geometry {
             c_last: Vec::new(),
             schur_inv: Vec::new(),
         };
-        let mut border = if self.closed { vec![0.0; n * mm] } else { Vec::new() };
+        let mut border = if self.closed {
+            vec![0.0; n * mm]
+        } else {
+            Vec::new()
+        };
         // Rows 0 … n−1 (open) or 0 … n−2 (closed; row n−1 is the border row).
         let last = if self.closed { n - 1 } else { n };
         let mut d_last = vec![0.0; mm];
@@ -1013,8 +1031,8 @@ impl Geometry {
             self.blocks(d, k, x, &mut a_blk, &mut d_blk, &mut tmp, &mut u);
             // C block: (2/h) S⁻¹ H̃ᵀ.
             c_blk.fill(0.0);
-            if self.fixed_row(k).is_none() {
-                if let Some(nx) = self.next(k) {
+            if let (None, Some(nx)) = (self.fixed_row(k), self.next(k)) {
+                {
                     let sc = &self.seg[nx];
                     s_matrix(self.ehat(nx), sc.inv_sinc, 2.0 / sc.h, &mut tmp);
                     if self.is_seam(nx) {
@@ -1073,7 +1091,12 @@ impl Geometry {
             for k in (0..n - 1).rev() {
                 tmp.copy_from_slice(&border[k * mm..(k + 1) * mm]);
                 if k + 2 < n {
-                    mat_mul(d, &fac.c[k * mm..(k + 1) * mm], &z[(k + 1) * mm..(k + 2) * mm], &mut tmp2);
+                    mat_mul(
+                        d,
+                        &fac.c[k * mm..(k + 1) * mm],
+                        &z[(k + 1) * mm..(k + 2) * mm],
+                        &mut tmp2,
+                    );
                     for (t, s) in tmp.iter_mut().zip(&tmp2) {
                         *t -= s;
                     }
@@ -1118,7 +1141,11 @@ impl Geometry {
         a_blk.fill(0.0);
         d_blk.fill(0.0);
         if self.fixed_row(k).is_some() {
-            let h = if k == 0 { self.seg[0].h } else { self.seg[k - 1].h };
+            let h = if k == 0 {
+                self.seg[0].h
+            } else {
+                self.seg[k - 1].h
+            };
             for i in 0..m {
                 d_blk[i * m + i] = 4.0 / h;
             }
@@ -1169,7 +1196,8 @@ impl Geometry {
                 }
                 for i in 0..m {
                     for j in 0..m {
-                        d_blk[i * m + j] += (0..m).map(|l| t2[i * m + l] * h[j * m + l]).sum::<f64>();
+                        d_blk[i * m + j] +=
+                            (0..m).map(|l| t2[i * m + l] * h[j * m + l]).sum::<f64>();
                     }
                 }
             } else {
@@ -1205,7 +1233,12 @@ impl Geometry {
         let mut t = vec![0.0; m];
         // Forward: yₖ = bₖ − Lₖ yₖ₋₁.
         for k in 1..rows {
-            mat_vec(d, &fac.l[k * mm..(k + 1) * mm], &x[(k - 1) * m..k * m], &mut t);
+            mat_vec(
+                d,
+                &fac.l[k * mm..(k + 1) * mm],
+                &x[(k - 1) * m..k * m],
+                &mut t,
+            );
             for (xa, ta) in x[k * m..(k + 1) * m].iter_mut().zip(&t) {
                 *xa -= ta;
             }
@@ -1213,13 +1246,23 @@ impl Geometry {
         // Back: wₖ = D̃ₖ⁻¹ (yₖ − Cₖ wₖ₊₁).
         for k in (0..rows).rev() {
             if k + 1 < rows {
-                mat_vec(d, &fac.c[k * mm..(k + 1) * mm], &x[(k + 1) * m..(k + 2) * m], &mut t);
+                mat_vec(
+                    d,
+                    &fac.c[k * mm..(k + 1) * mm],
+                    &x[(k + 1) * m..(k + 2) * m],
+                    &mut t,
+                );
                 for (xa, ta) in x[k * m..(k + 1) * m].iter_mut().zip(&t) {
                     *xa -= ta;
                 }
             }
             t.copy_from_slice(&x[k * m..(k + 1) * m]);
-            mat_vec(d, &fac.dinv[k * mm..(k + 1) * mm], &t, &mut x[k * m..(k + 1) * m]);
+            mat_vec(
+                d,
+                &fac.dinv[k * mm..(k + 1) * mm],
+                &t,
+                &mut x[k * m..(k + 1) * m],
+            );
         }
         if self.closed {
             // x_{n−1} = S⁻¹ (b_{n−1} − A w_{n−2} − C w₀); xₖ = wₖ − Zₖ x_{n−1}.
@@ -1293,7 +1336,7 @@ impl Geometry {
             residual = new;
         }
         info.residual = residual;
-        if !(residual <= MAX_RESIDUAL) || x.iter().any(|v| !v.is_finite()) {
+        if residual.is_nan() || residual > MAX_RESIDUAL || x.iter().any(|v| !v.is_finite()) {
             return Err(fail(info));
         }
         Ok((x, info))
@@ -1377,7 +1420,7 @@ fn invert<D: Dim>(d: D, a: &[f64], out: &mut [f64]) -> bool {
             }
         });
         let pv = w[piv * m + col];
-        if !(pv.abs() > 0.0) || !pv.is_finite() {
+        if pv == 0.0 || !pv.is_finite() {
             return false;
         }
         if piv != col {
@@ -1416,9 +1459,12 @@ mod tests {
             // One ulp apart across the switch: the series below, the closed form at 0.1.
             let below = f(0.1 - 1.5e-17);
             let above = f(0.1);
-            assert!( (below - above).abs() < 1e-15, "{below} vs {above}");
+            assert!((below - above).abs() < 1e-15, "{below} vs {above}");
         }
-        assert!((kappa(1.0) - (1.0 - 1f64.sin() * 1f64.cos())).abs() < 1e-16, "kappa(1)");
+        assert!(
+            (kappa(1.0) - (1.0 - 1f64.sin() * 1f64.cos())).abs() < 1e-16,
+            "kappa(1)"
+        );
     }
 
     #[test]

@@ -11,6 +11,7 @@
     clippy::cast_precision_loss,
     clippy::cast_possible_truncation,
     clippy::too_many_lines,
+    clippy::needless_range_loop,
     reason = "tests: a panic is the failure report"
 )]
 
@@ -18,8 +19,8 @@ mod support;
 
 use spherekit::glam::{DMat3, DVec3, DVec4};
 use spherekit::{
-    Ambient, CubicEnd, CubicSpline, Curve, Manifold, S2Point, Side, SnPoint, SplineError,
-    UnitQuat, VecN, angular_velocity_acceleration_body, continuity, unflip,
+    Ambient, CubicEnd, CubicSpline, Curve, Manifold, S2Point, Side, SnPoint, SplineError, UnitQuat,
+    VecN, angular_velocity_acceleration_body, continuity, unflip,
 };
 use support::{Rng, check_derivatives, check_derivatives_at, interior_parameters};
 
@@ -67,7 +68,10 @@ fn check_curve<P: Manifold>(c: &CubicSpline<P>, keys: &[P]) {
     if c.closed() {
         assert!(c.eval(k[keys.len()]).dist(&keys[0]) <= 1e-12, "closing key");
         let (c0, c1, c2) = seam_jumps(c);
-        assert!(c0 <= 1e-12 && c1 <= 1e-10 && c2 <= 1e-10, "seam: {c0:e} {c1:e} {c2:e}");
+        assert!(
+            c0 <= 1e-12 && c1 <= 1e-10 && c2 <= 1e-10,
+            "seam: {c0:e} {c1:e} {c2:e}"
+        );
     }
     let (j1, j2) = c2_jumps(c);
     assert!(j1 <= 1e-10 && j2 <= 1e-10, "C² jumps {j1:e} {j2:e}");
@@ -92,19 +96,28 @@ fn interpolates_and_is_c2_on_s2_s3_s5() {
     let knots = Some(KNOTS6.to_vec());
     for end in [CubicEnd::Natural, CubicEnd::Scipy] {
         let p = walk_s2(&mut rng, 6, 1.5);
-        check_curve(&CubicSpline::try_new(p.clone(), knots.clone(), end.clone(), false).unwrap(), &p);
+        check_curve(
+            &CubicSpline::try_new(p.clone(), knots.clone(), end.clone(), false).unwrap(),
+            &p,
+        );
         let q = rng.chain(6, 1.2);
         let qe = match end {
             CubicEnd::Natural => CubicEnd::Natural,
             _ => CubicEnd::Scipy,
         };
-        check_curve(&CubicSpline::try_new(q.clone(), knots.clone(), qe.clone(), false).unwrap(), &q);
+        check_curve(
+            &CubicSpline::try_new(q.clone(), knots.clone(), qe.clone(), false).unwrap(),
+            &q,
+        );
         let s = rng.walk_sn(6, 5, 0.5);
         let se = match end {
             CubicEnd::Natural => CubicEnd::Natural,
             _ => CubicEnd::Scipy,
         };
-        check_curve(&CubicSpline::try_new(s.clone(), knots.clone(), se, false).unwrap(), &s);
+        check_curve(
+            &CubicSpline::try_new(s.clone(), knots.clone(), se, false).unwrap(),
+            &s,
+        );
     }
 }
 
@@ -114,11 +127,20 @@ fn closed_curves_are_c2_at_the_seam() {
     let mut k = KNOTS6.to_vec();
     k.push(6.5);
     let p = walk_s2(&mut rng, 6, 1.5);
-    check_curve(&CubicSpline::try_new(p.clone(), Some(k.clone()), CubicEnd::Natural, true).unwrap(), &p);
+    check_curve(
+        &CubicSpline::try_new(p.clone(), Some(k.clone()), CubicEnd::Natural, true).unwrap(),
+        &p,
+    );
     let q = rng.chain(6, 1.0);
-    check_curve(&CubicSpline::try_new(q.clone(), Some(k.clone()), CubicEnd::Natural, true).unwrap(), &q);
+    check_curve(
+        &CubicSpline::try_new(q.clone(), Some(k.clone()), CubicEnd::Natural, true).unwrap(),
+        &q,
+    );
     let s = rng.walk_sn(6, 5, 0.6);
-    check_curve(&CubicSpline::try_new(s.clone(), Some(k), CubicEnd::Natural, true).unwrap(), &s);
+    check_curve(
+        &CubicSpline::try_new(s.clone(), Some(k), CubicEnd::Natural, true).unwrap(),
+        &s,
+    );
     // Uniform default knots: one more than the points, closing spacing 1.
     let c = CubicSpline::try_new(q.clone(), None, CubicEnd::Natural, true).unwrap();
     assert_eq!(c.knots(), &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
@@ -129,17 +151,31 @@ fn closed_curves_are_c2_at_the_seam() {
 
 /// The quaternion from scalar-first components.
 fn wxyz(v: &serde_json::Value) -> UnitQuat {
-    let a: Vec<f64> = v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let a: Vec<f64> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
     UnitQuat::from_wxyz([a[0], a[1], a[2], a[3]]).unwrap()
 }
 
 fn vec3(v: &serde_json::Value) -> DVec3 {
-    let a: Vec<f64> = v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let a: Vec<f64> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
     DVec3::new(a[0], a[1], a[2])
 }
 
 fn floats(v: &serde_json::Value) -> Vec<f64> {
-    v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
 }
 
 /// `CubicEnd::Scipy` on S³ against scipy 1.17.1's `RotationSpline` (fixture written by
@@ -161,7 +197,12 @@ fn scipy_agreement() {
         let ts = floats(&case["ts"]);
         let quats: Vec<UnitQuat> = case["quats"].as_array().unwrap().iter().map(wxyz).collect();
         let rates: Vec<DVec3> = case["rates"].as_array().unwrap().iter().map(vec3).collect();
-        let accs: Vec<DVec3> = case["accelerations"].as_array().unwrap().iter().map(vec3).collect();
+        let accs: Vec<DVec3> = case["accelerations"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(vec3)
+            .collect();
         let rate_scale = rates.iter().map(|r| r.length()).fold(0.0, f64::max);
         let acc_scale = accs.iter().map(|r| r.length()).fold(0.0, f64::max);
         let (mut angle, mut rate, mut acc) = (0.0_f64, 0.0_f64, 0.0_f64);
@@ -182,9 +223,14 @@ fn scipy_agreement() {
         worst_rate = worst_rate.max(rate);
         worst_acc = worst_acc.max(acc);
     }
-    println!("worst: angle {worst_angle:.1e} rad, rate {worst_rate:.1e}, acceleration {worst_acc:.1e}");
+    println!(
+        "worst: angle {worst_angle:.1e} rad, rate {worst_rate:.1e}, acceleration {worst_acc:.1e}"
+    );
     assert!(worst_angle <= 1e-8, "angle {worst_angle:e}");
-    assert!(worst_rate <= 1e-7 && worst_acc <= 1e-7, "rate {worst_rate:e}, acceleration {worst_acc:e}");
+    assert!(
+        worst_rate <= 1e-7 && worst_acc <= 1e-7,
+        "rate {worst_rate:e}, acceleration {worst_acc:e}"
+    );
 }
 
 #[test]
@@ -215,8 +261,13 @@ fn clamped_ends_have_the_given_velocity() {
         p[0].project_tangent(&rng.vec3(2.0)),
         p[5].project_tangent(&rng.vec3(2.0)),
     );
-    let c = CubicSpline::try_new(p.clone(), k.clone(), CubicEnd::Clamped { start: v0, end: v1 }, false)
-        .unwrap();
+    let c = CubicSpline::try_new(
+        p.clone(),
+        k.clone(),
+        CubicEnd::Clamped { start: v0, end: v1 },
+        false,
+    )
+    .unwrap();
     check_curve(&c, &p);
     assert!((c.jet(0.0).velocity - v0).length() <= 1e-12);
     assert!((c.jet(5.5).velocity - v1).length() <= 1e-12);
@@ -242,8 +293,16 @@ fn clamped_ends_have_the_given_velocity() {
         s[0].project_tangent(&VecN::new(rng.vec(6))),
         s[5].project_tangent(&VecN::new(rng.vec(6))),
     );
-    let c = CubicSpline::try_new(s.clone(), k, CubicEnd::Clamped { start: a.clone(), end: b.clone() }, false)
-        .unwrap();
+    let c = CubicSpline::try_new(
+        s.clone(),
+        k,
+        CubicEnd::Clamped {
+            start: a.clone(),
+            end: b.clone(),
+        },
+        false,
+    )
+    .unwrap();
     check_curve(&c, &s);
     assert!((c.jet(0.0).velocity - a).length() <= 1e-12);
     assert!((c.jet(5.5).velocity - b).length() <= 1e-12);
@@ -256,30 +315,51 @@ fn clamped_velocity_errors_name_the_end() {
         CubicSpline::try_new(p.clone(), None, CubicEnd::Clamped { start, end }, false).unwrap_err()
     };
     let e = bad(DVec3::new(0.1, 1.0, 0.0), DVec3::X);
-    assert_eq!(e.to_string(), "the start velocity is not tangent to the first key");
+    assert_eq!(
+        e.to_string(),
+        "the start velocity is not tangent to the first key"
+    );
     let e = bad(DVec3::Y, DVec3::new(0.0, 0.0, 1e-6));
-    assert_eq!(e.to_string(), "the end velocity is not tangent to the last key");
+    assert_eq!(
+        e.to_string(),
+        "the end velocity is not tangent to the last key"
+    );
     let e = bad(DVec3::new(0.0, f64::NAN, 0.0), DVec3::X);
-    assert_eq!(e.to_string(), "the start velocity has a non-finite coordinate");
+    assert_eq!(
+        e.to_string(),
+        "the start velocity has a non-finite coordinate"
+    );
     // Within the tolerance: accepted and projected.
     let c = CubicSpline::try_new(
         p.clone(),
         None,
-        CubicEnd::Clamped { start: DVec3::new(1e-12, 1.0, 0.0), end: DVec3::X },
+        CubicEnd::Clamped {
+            start: DVec3::new(1e-12, 1.0, 0.0),
+            end: DVec3::X,
+        },
         false,
     )
     .unwrap();
     assert!(c.jet(0.0).velocity.x.abs() < 1e-300 + 1e-20);
     // S^m: a velocity of the wrong dimension.
-    let s = vec![SnPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(), SnPoint::try_new(vec![0.0, 1.0, 0.0]).unwrap()];
+    let s = vec![
+        SnPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(),
+        SnPoint::try_new(vec![0.0, 1.0, 0.0]).unwrap(),
+    ];
     let e = CubicSpline::try_new(
         s,
         None,
-        CubicEnd::Clamped { start: VecN::new(vec![0.0, 1.0]), end: VecN::new(vec![1.0, 0.0, 0.0]) },
+        CubicEnd::Clamped {
+            start: VecN::new(vec![0.0, 1.0]),
+            end: VecN::new(vec![1.0, 0.0, 0.0]),
+        },
         false,
     )
     .unwrap_err();
-    assert!(matches!(e, SplineError::InvalidEndVelocity { start: true, .. }), "{e}");
+    assert!(
+        matches!(e, SplineError::InvalidEndVelocity { start: true, .. }),
+        "{e}"
+    );
 }
 
 #[test]
@@ -289,34 +369,60 @@ fn construction_errors() {
     let err = |p: Vec<S2Point>, k: Option<Vec<f64>>, closed| {
         CubicSpline::try_new(p, k, nat(), closed).unwrap_err()
     };
-    assert_eq!(err(p[..1].to_vec(), None, false), SplineError::TooFewPoints { min: 2, got: 1 });
-    assert_eq!(err(p[..2].to_vec(), None, true), SplineError::TooFewPoints { min: 3, got: 2 });
+    assert_eq!(
+        err(p[..1].to_vec(), None, false),
+        SplineError::TooFewPoints { min: 2, got: 1 }
+    );
+    assert_eq!(
+        err(p[..2].to_vec(), None, true),
+        SplineError::TooFewPoints { min: 3, got: 2 }
+    );
     assert_eq!(
         err(p.clone(), Some(vec![0.0, 1.0, 2.0]), true),
-        SplineError::KnotCount { expected: 4, got: 3 }
+        SplineError::KnotCount {
+            expected: 4,
+            got: 3
+        }
     );
     assert_eq!(
         err(p.clone(), Some(vec![0.0, 1.0, 2.0, 3.0]), false),
-        SplineError::KnotCount { expected: 3, got: 4 }
+        SplineError::KnotCount {
+            expected: 3,
+            got: 4
+        }
     );
-    assert_eq!(err(p.clone(), Some(vec![0.0, 1.0, 1.0]), false), SplineError::KnotsNotIncreasing { index: 2 });
-    assert_eq!(err(p.clone(), Some(vec![0.0, f64::NAN, 1.0]), false), SplineError::InvalidKnot { index: 1 });
+    assert_eq!(
+        err(p.clone(), Some(vec![0.0, 1.0, 1.0]), false),
+        SplineError::KnotsNotIncreasing { index: 2 }
+    );
+    assert_eq!(
+        err(p.clone(), Some(vec![0.0, f64::NAN, 1.0]), false),
+        SplineError::InvalidKnot { index: 1 }
+    );
     let anti = vec![S2Point::X, S2Point::Y, S2Point::try_new(-DVec3::Y).unwrap()];
     assert_eq!(err(anti, None, false), SplineError::Antipodal { index: 1 });
     let closing = vec![S2Point::X, S2Point::Y, S2Point::try_new(-DVec3::X).unwrap()];
     assert!(CubicSpline::try_new(closing.clone(), None, nat(), false).is_ok());
     let e = err(closing, None, true);
     assert_eq!(e, SplineError::AntipodalClosing);
-    assert_eq!(e.to_string(), "the last and the first point are antipodal: the closing geodesic is not unique");
+    assert_eq!(
+        e.to_string(),
+        "the last and the first point are antipodal: the closing geodesic is not unique"
+    );
     let e = CubicSpline::try_new(p, None, CubicEnd::Scipy, true).unwrap_err();
-    assert!(matches!(e, SplineError::InvalidParameter { name: "end", .. }), "{e}");
+    assert!(
+        matches!(e, SplineError::InvalidParameter { name: "end", .. }),
+        "{e}"
+    );
 }
 
 /// A small dense solve (Gaussian elimination with partial pivoting) for the scalar splines.
 fn dense_solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
     let n = b.len();
     for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs())).unwrap();
+        let p = (c..n)
+            .max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))
+            .unwrap();
         a.swap(c, p);
         b.swap(c, p);
         for r in c + 1..n {
@@ -417,16 +523,28 @@ fn rotation_equivariance() {
     let ts: Vec<f64> = (0..=55).map(|i| f64::from(i) / 10.0).collect();
     let p = walk_s2(&mut rng, 6, 1.5);
     let r = rng.rotation();
-    let rp: Vec<S2Point> = p.iter().map(|x| S2Point::try_new(r * x.as_dvec3()).unwrap()).collect();
+    let rp: Vec<S2Point> = p
+        .iter()
+        .map(|x| S2Point::try_new(r * x.as_dvec3()).unwrap())
+        .collect();
     for closed in [false, true] {
-        let kk = if closed { Some([KNOTS6.as_slice(), &[6.0]].concat()) } else { k.clone() };
+        let kk = if closed {
+            Some([KNOTS6.as_slice(), &[6.0]].concat())
+        } else {
+            k.clone()
+        };
         let a = CubicSpline::try_new(p.clone(), kk.clone(), CubicEnd::Natural, closed).unwrap();
         let b = CubicSpline::try_new(rp.clone(), kk, CubicEnd::Natural, closed).unwrap();
         for &t in &ts {
             let (ja, jb) = (a.jet(t), b.jet(t));
             assert!((r * ja.point.as_dvec3() - jb.point.as_dvec3()).length() <= 1e-13);
-            assert!((r * ja.velocity - jb.velocity).length() <= 1e-12 * ja.velocity.length().max(1.0));
-            assert!((r * ja.acceleration - jb.acceleration).length() <= 1e-11 * ja.acceleration.length().max(1.0));
+            assert!(
+                (r * ja.velocity - jb.velocity).length() <= 1e-12 * ja.velocity.length().max(1.0)
+            );
+            assert!(
+                (r * ja.acceleration - jb.acceleration).length()
+                    <= 1e-11 * ja.acceleration.length().max(1.0)
+            );
         }
     }
     // S³: q ↦ a·q·b is an orthogonal map of ℝ⁴.
@@ -477,7 +595,10 @@ fn reversal_gap<P: Manifold>(p: &[P], k: &[f64], end: &dyn Fn() -> CubicEnd<P::V
 fn reversal_symmetry_holds_on_a_great_circle_only() {
     let k = KNOTS6.to_vec();
     let on_circle = |a: f64| S2Point::try_new(DVec3::new(a.cos(), a.sin(), 0.0)).unwrap();
-    let circle: Vec<S2Point> = [0.3, 1.5, 0.9, 2.8, 4.4, 3.9].iter().map(|&a| on_circle(a)).collect();
+    let circle: Vec<S2Point> = [0.3, 1.5, 0.9, 2.8, 4.4, 3.9]
+        .iter()
+        .map(|&a| on_circle(a))
+        .collect();
     for end in [CubicEnd::Natural, CubicEnd::Scipy] {
         let gap = reversal_gap(&circle, &k, &|| end.clone());
         assert!(gap <= 1e-13, "great circle, {end:?}: {gap:e}");
@@ -527,7 +648,8 @@ fn identical_consecutive_keys_are_allowed() {
     let mut rng = Rng::new(8);
     let mut p = walk_s2(&mut rng, 5, 1.2);
     p.insert(2, p[2]);
-    let c = CubicSpline::try_new(p.clone(), Some(KNOTS6.to_vec()), CubicEnd::Natural, false).unwrap();
+    let c =
+        CubicSpline::try_new(p.clone(), Some(KNOTS6.to_vec()), CubicEnd::Natural, false).unwrap();
     check_curve(&c, &p);
     let q = vec![UnitQuat::IDENTITY; 4];
     let c = CubicSpline::try_new(q.clone(), None, CubicEnd::Scipy, false).unwrap();
@@ -561,14 +683,23 @@ fn near_half_turn_quaternions() {
     let mut rng = Rng::new(9);
     let mut q = vec![rng.quat()];
     for i in 0..6 {
-        let angle = if i == 3 { std::f64::consts::PI } else { std::f64::consts::PI - 1e-9 };
+        let angle = if i == 3 {
+            std::f64::consts::PI
+        } else {
+            std::f64::consts::PI - 1e-9
+        };
         let axis = rng.unit3();
         let last = *q.last().unwrap();
         q.push(last.mul(UnitQuat::from_axis_angle(axis, angle).unwrap()));
     }
     unflip(&mut q);
-    let c = CubicSpline::try_new(q.clone(), Some([KNOTS6.as_slice(), &[6.0]].concat()), CubicEnd::Scipy, false)
-        .unwrap();
+    let c = CubicSpline::try_new(
+        q.clone(),
+        Some([KNOTS6.as_slice(), &[6.0]].concat()),
+        CubicEnd::Scipy,
+        false,
+    )
+    .unwrap();
     check_curve(&c, &q);
 }
 
@@ -576,7 +707,8 @@ fn near_half_turn_quaternions() {
 fn tiny_and_huge_time_spacings_scale_the_parameter() {
     let mut rng = Rng::new(10);
     let p = walk_s2(&mut rng, 6, 1.5);
-    let base = CubicSpline::try_new(p.clone(), Some(KNOTS6.to_vec()), CubicEnd::Scipy, false).unwrap();
+    let base =
+        CubicSpline::try_new(p.clone(), Some(KNOTS6.to_vec()), CubicEnd::Scipy, false).unwrap();
     for scale in [1e-9, 1e-40, 1e9, 1e40] {
         let k: Vec<f64> = KNOTS6.iter().map(|t| t * scale).collect();
         let c = CubicSpline::try_new(p.clone(), Some(k), CubicEnd::Scipy, false).unwrap();
@@ -585,7 +717,9 @@ fn tiny_and_huge_time_spacings_scale_the_parameter() {
             let t = f64::from(i) / 10.0;
             let (a, b) = (base.jet(t), c.jet(t * scale));
             assert!(a.point.dist(&b.point) <= 1e-13, "scale {scale} at {t}");
-            assert!((a.velocity - b.velocity * scale).length() <= 1e-12 * a.velocity.length().max(1.0));
+            assert!(
+                (a.velocity - b.velocity * scale).length() <= 1e-12 * a.velocity.length().max(1.0)
+            );
             assert!(
                 (a.acceleration - b.acceleration * (scale * scale)).length()
                     <= 1e-11 * a.acceleration.length().max(1.0)
