@@ -75,7 +75,7 @@ def main():
     xyzw = keys[:, [1, 2, 3, 0]]
     xyzw1000 = keys1000[:, [1, 2, 3, 0]]
     ts = params(methods["geodesic"]["domain"], n)
-    peers = []  # (peer, spherekit method, ns/sample, max diff or None, note)
+    peers = []  # (peer, spherekit method, ns/sample, max diff or None, note[, spherekit ns])
 
     # scipy Slerp vs geodesic.
     rot = Rotation.from_quat(xyzw)
@@ -101,11 +101,28 @@ def main():
     diff = updown(quaternion.as_float_array(out)[::every], np.array(r["values"]["squad"]))
     peers.append(("numpy-quaternion squad", "squad", t / n, diff, "same curve"))
 
-    # scipy RotationSpline (C2, cubic in rotation vectors) vs the C2 spherekit splines.
+    # scipy RotationSpline vs cubic (scipy ends): the same curve. scipy is timed for the point,
+    # the body-frame rate and the acceleration (rs(t), rs(t, 1), rs(t, 2)), spherekit for
+    # jet_many plus the conversion of each jet to body-frame rate and acceleration.
     spline = RotationSpline(times, rot)
+    t3, (sq_, sr_, sa_) = best(lambda: (spline(ts), spline(ts, 1), spline(ts, 2)))
+    cv = r["cubic"]["values"]
+    qdiff = updown(sq_.as_quat()[::every][:, [3, 0, 1, 2]], np.array(cv["quats"]))
+    rdiff = float(np.abs(sr_[::every] - np.array(cv["rates"])).max() / np.abs(sr_).max())
+    adiff = float(np.abs(sa_[::every] - np.array(cv["accelerations"])).max() / np.abs(sa_).max())
+    peers.append(("scipy RotationSpline, rotation + rate + acceleration", "cubic", t3 / n, qdiff,
+                  f"same curve (scipy ends); rates {rdiff:.1e}, accelerations {adiff:.1e} relative; "
+                  "spherekit: `jet_many` + body rates", r["cubic"]["rates_ns"]))
+    # RotationSpline (C², interpolating) vs the other C²-or-smoother spherekit curves: different
+    # constructions, compared for speed only (rotations alone, `rs(t)`).
     t, _ = best(lambda: spline(ts))
-    for m in ("bspline-kim", "arc-blend", "beta"):
-        peers.append(("scipy RotationSpline", m, t / n, None, "different C2 curve"))
+    peers.append(("scipy RotationSpline, rotation", "cubic", t / n, None, "same curve, point only"))
+    peers.append(("scipy RotationSpline, rotation", "bspline-kim", t / n, None,
+                  "different construction: C², keys are B-spline control points (no interpolation)"))
+    peers.append(("scipy RotationSpline, rotation", "arc-blend", t / n, None,
+                  "different construction: C² (order 2), interpolating"))
+    peers.append(("scipy RotationSpline, rotation", "beta", t / n, None,
+                  "different construction: G¹ only (acceleration jumps 0.06–0.82 at joints)"))
     build20, _ = best(lambda: RotationSpline(times, rot), reps=50)
     rot1000 = Rotation.from_quat(xyzw1000)
     build1000, _ = best(lambda: RotationSpline(times1000, rot1000), reps=5)
@@ -180,22 +197,26 @@ def write(r, peers, build20, build1000, up0, up1):
     lines.append("### Peers, same keys and parameters")
     lines.append("")
     lines.append(
-        "Ratio = peer ns / spherekit `eval_many` ns (higher: spherekit faster). Max diff: largest "
+        "Ratio = peer ns / spherekit `eval_many` ns (higher: spherekit faster; for the cubic row with "
+        "rate and acceleration: / `jet_many` plus body-rate conversion). Max diff: largest "
         "coordinate difference of the quaternions (up to sign) where both compute the same curve."
     )
     lines.append("")
     lines.append("| peer | spherekit method | peer ns/sample | spherekit ns/sample | ratio | max diff | note |")
     lines.append("|---|---|---:|---:|---:|---:|---|")
-    for peer, name, ns, diff, note in peers:
-        mine = methods[name]["eval_many_ns"]
+    for peer, name, ns, diff, note, *own in peers:
+        mine = own[0] if own else methods[name]["eval_many_ns"]
         d = "–" if diff is None else f"{diff:.1e}"
         lines.append(f"| {peer} | {name} | {fmt(ns)} | {fmt(mine)} | {ns / mine:.1f}× | {d} | {note} |")
     lines.append("")
-    lines.append("Construction against scipy `RotationSpline` (C²):")
+    lines.append("Construction against scipy `RotationSpline` (C², interpolating). `cubic` is the same "
+                 "curve (scipy ends); the others are different constructions: bspline-kim C² "
+                 "(keys as control points), arc-blend C² (interpolating), beta G¹ (interpolating, "
+                 "Newton solve).")
     lines.append("")
     lines.append("| keys | RotationSpline µs | method | spherekit µs | ratio |")
     lines.append("|---:|---:|---|---:|---:|")
-    for name in ("bspline-kim", "arc-blend", "beta"):
+    for name in ("cubic", "bspline-kim", "arc-blend", "beta"):
         m = methods[name]
         lines.append(f"| 20 | {fmt(build20 / 1e3, 1)} | {name} | {fmt(m['build_20_ns'] / 1e3, 2)} | "
                      f"{build20 / m['build_20_ns']:.1f}× |")

@@ -8,8 +8,8 @@
 
 use spherekit::{
     ArcBlend, BetaParams, BetaSpline, Bezier, BezierKim, BsplineKim, CatmullRom, CornerBlend,
-    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
-    NlerpSpline, S2Point, Squad, UnitQuat,
+    CornerBlendS3, CubicEnd, CubicSpline, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas,
+    GeodesicSpline, LastEdge, NlerpSpline, S2Point, Squad, UnitQuat,
 };
 
 /// A boxed curve of unit quaternions.
@@ -77,6 +77,11 @@ pub(crate) const METHODS: &[Method] = &[
         name: "beta",
         slerps: 6,
         build: |k| Box::new(BetaSpline::try_new(k, &BetaParams::default()).expect("beta")),
+    },
+    Method {
+        name: "cubic",
+        slerps: 1,
+        build: |k| Box::new(CubicSpline::try_new(k, None, CubicEnd::Scipy, false).expect("cubic")),
     },
     Method {
         name: "arc-blend",

@@ -23,7 +23,8 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use serde_json::json;
-use spherekit::UnitQuat;
+use spherekit::glam::DVec3;
+use spherekit::{CubicEnd, CubicSpline, Curve, UnitQuat, angular_velocity_acceleration_body};
 
 /// The best time of `reps` runs of `f`, in nanoseconds, divided by `per`.
 fn best(reps: usize, per: usize, mut f: impl FnMut()) -> f64 {
@@ -102,6 +103,31 @@ fn main() {
         }
     });
     black_box(&out);
+    // The cubic spline with scipy's end condition against `RotationSpline` on the same keys and
+    // times 0 … n − 1: the point with the body-frame rate and acceleration per sample (scipy's
+    // `rs(t)`, `rs(t, 1)`, `rs(t, 2)`), and construction for 1 000 keys.
+    let cubic = CubicSpline::try_new(keys.clone(), None, CubicEnd::Scipy, false).unwrap();
+    let ts = data::params(cubic.domain(), samples);
+    let mut jets = vec![cubic.jet(ts[0]); samples];
+    let mut rates = vec![(DVec3::ZERO, DVec3::ZERO); samples];
+    let cubic_rates_ns = best(reps, samples, || {
+        cubic.jet_many(black_box(&ts), &mut jets);
+        for (o, j) in rates.iter_mut().zip(&jets) {
+            *o = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
+        }
+    });
+    let keys_1000 = data::keys_s3(1000);
+    let cubic_build_1000_ns = best(5, 1, || {
+        black_box(
+            CubicSpline::try_new(black_box(keys_1000.clone()), None, CubicEnd::Scipy, false)
+                .unwrap(),
+        );
+    });
+    let cubic_values = json!({
+        "quats": jets.iter().step_by(check_every).map(|j| wxyz(&j.point)).collect::<Vec<_>>(),
+        "rates": rates.iter().step_by(check_every).map(|r| r.0.to_array()).collect::<Vec<_>>(),
+        "accelerations": rates.iter().step_by(check_every).map(|r| r.1.to_array()).collect::<Vec<_>>(),
+    });
     let report = json!({
         "samples": samples,
         "keys": keys.iter().map(wxyz).collect::<Vec<_>>(),
@@ -110,6 +136,11 @@ fn main() {
         "methods": methods,
         "glam_slerp_ns": slerp,
         "values": values,
+        "cubic": {
+            "rates_ns": cubic_rates_ns,
+            "build_1000_ns": cubic_build_1000_ns,
+            "values": cubic_values,
+        },
     });
     println!("{report}");
 }

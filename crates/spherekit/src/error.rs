@@ -143,6 +143,16 @@ pub enum SplineError {
         /// The knot `t_{index−1}` of the previous point.
         knot: f64,
     },
+    /// The last and the first point of a closed curve are antipodal: the closing geodesic is
+    /// not unique.
+    AntipodalClosing,
+    /// A clamped end velocity cannot be used.
+    InvalidEndVelocity {
+        /// `true` for the velocity at the first key, `false` for the one at the last key.
+        start: bool,
+        /// What is wrong, for example `"is not tangent to the first key"`.
+        reason: &'static str,
+    },
 }
 
 impl fmt::Display for SplineError {
@@ -218,6 +228,13 @@ impl fmt::Display for SplineError {
                         index.saturating_sub(1)
                     )
                 }
+            }
+            Self::AntipodalClosing => f.write_str(
+                "the last and the first point are antipodal: the closing geodesic is not unique",
+            ),
+            Self::InvalidEndVelocity { start, reason } => {
+                let which = if *start { "start" } else { "end" };
+                write!(f, "the {which} velocity {reason}")
             }
         }
     }

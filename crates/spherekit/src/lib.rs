@@ -37,6 +37,7 @@
 //! | [`Squad`] | S³ | Shoemake's squad, non-uniform knots | C¹ |
 //! | [`CatmullRom`] | all | Catmull-Rom by slerps (textbook rule on S³, intrinsic on S^m) | C¹ |
 //! | [`GammaSpline`] | S³ | Boehm's Gamma spline lifted to S³ with Kim's cubic segments | C¹ |
+//! | [`CubicSpline`] | all | cubic in the tangent space of each key, key velocities solved for C² (scipy's `RotationSpline` on S³); natural, clamped, scipy ends or closed | C² |
 //! | [`BetaSpline`] | all | spherical Beta spline (bias β₁, tension β₂) with a Newton interpolation solver | G¹ |
 //! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
 //! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline | Cⁿ |
@@ -63,7 +64,9 @@
 //! - **Angular velocity** of a quaternion curve `q(t)` is the space-frame (fixed-frame) vector
 //!   `ω = 2·q′·q̄`, and the angular acceleration is `α = ω′ = 2·q″·q̄` (vector parts). The
 //!   **factor 2** comes from the half-angle: a curve moving at speed `|q′|` on S³ turns the body
-//!   at `2|q′|` radians per unit time. See [`angular_velocity_acceleration`].
+//!   at `2|q′|` radians per unit time. See [`angular_velocity_acceleration`]; the body-frame
+//!   values `ω_b = 2·q̄·q′ = q̄·ω·q` and `α_b = q̄·α·q` (scipy's convention) are
+//!   [`angular_velocity_acceleration_body`].
 //! - **Double cover.** `q` and `−q` are the same rotation. Geodesic interpolation never flips
 //!   signs; spline constructors use the keys as given. [`unflip`] makes consecutive keys have
 //!   non-negative dot products, and the scene format calls it once before construction unless
@@ -98,6 +101,7 @@ mod catmull_rom;
 mod circle;
 mod continuity;
 mod corner_blend;
+mod cubic;
 mod curve;
 mod error;
 mod flow;
@@ -125,6 +129,7 @@ pub use catmull_rom::CatmullRom;
 pub use circle::CircleArc;
 pub use continuity::{ContinuityClass, JointContinuity, continuity};
 pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
+pub use cubic::{CubicEnd, CubicSolveInfo, CubicSpline, TANGENT_TOLERANCE};
 pub use curve::{Curve, Jet, Side};
 pub use error::{PointError, SolveError, SplineError};
 pub use gamma_spline::{GammaJoint, GammaSpline, Gammas, LastEdge};
@@ -136,7 +141,10 @@ pub use rotation::{
     ROTATION_TOLERANCE, RotationError, rodrigues_compose, rotation_matrix_from_rodrigues,
 };
 pub use s2::S2Point;
-pub use s3::{UnitQuat, angular_velocity_acceleration, unflip};
+pub use s3::{
+    UnitQuat, angular_velocity_acceleration, angular_velocity_acceleration_body, unflip,
+    velocity_from_angular, velocity_from_angular_body,
+};
 pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
 pub use sn::SnPoint;

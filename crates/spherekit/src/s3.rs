@@ -288,3 +288,55 @@ pub fn angular_velocity_acceleration(q: UnitQuat, dq: DVec4, ddq: DVec4) -> (DVe
     let alpha = (DQuat::from_vec4(ddq) * qc).xyz() * 2.0;
     (omega, alpha)
 }
+
+/// Body-frame angular velocity and acceleration of a unit-quaternion curve from its ambient
+/// derivatives: the counterpart of [`angular_velocity_acceleration`] in the frame that turns
+/// with the body (scipy's `RotationSpline(t, 1)` and `RotationSpline(t, 2)`).
+///
+/// ```text
+/// space frame:  ω = 2·q′·q̄,   α = ω′ = 2·q″·q̄     (vector parts)
+/// body frame:   ω_b = 2·q̄·q′ = q̄·ω·q,   α_b = ω_b′ = 2·q̄·q″ = q̄·α·q
+/// ```
+///
+/// `ω_b′ = 2·(q̄′·q′ + q̄·q″)`, and `q̄′·q′ = |q′|²` is real, so it drops out of the vector part.
+/// The acceleration transforms like the velocity although the frame turns: differentiating
+/// `ω_b = q̄·ω·q` with `q′ = ½·ω·q` (so `q̄′ = −½·q̄·ω`) gives
+/// `ω_b′ = q̄·α·q + ½·q̄·(ω·ω − ω·ω)·q = q̄·α·q`: the turning of the frame contributes `ω × ω = 0`.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::{angular_velocity_acceleration, angular_velocity_acceleration_body, UnitQuat};
+/// use spherekit::glam::{DQuat, DVec3, DVec4};
+///
+/// let q = UnitQuat::from_axis_angle(DVec3::new(1.0, 2.0, 0.5), 0.8).unwrap();
+/// // Turning about the body's own x axis at 3 rad per unit time: q′ = ½·q·(3 i).
+/// let dq = DVec4::from(q.as_dquat() * DQuat::from_xyzw(1.5, 0.0, 0.0, 0.0));
+/// let ddq = DVec4::from(q.as_dquat() * DQuat::from_xyzw(0.0, 0.0, 0.0, -2.25));
+/// let (wb, ab) = angular_velocity_acceleration_body(q, dq, ddq);
+/// assert!((wb - DVec3::new(3.0, 0.0, 0.0)).length() < 1e-14);
+/// assert!(ab.length() < 1e-14);
+/// let (w, _) = angular_velocity_acceleration(q, dq, ddq);
+/// assert!((q.rotate(wb) - w).length() < 1e-14); // ω = q·ω_b·q̄
+/// ```
+#[must_use]
+pub fn angular_velocity_acceleration_body(q: UnitQuat, dq: DVec4, ddq: DVec4) -> (DVec3, DVec3) {
+    let qc = q.0.conjugate();
+    let omega = (qc * DQuat::from_vec4(dq)).xyz() * 2.0;
+    let alpha = (qc * DQuat::from_vec4(ddq)).xyz() * 2.0;
+    (omega, alpha)
+}
+
+/// The ambient velocity `q′ = ½·ω·q` of a unit-quaternion curve at `q` turning with the
+/// space-frame angular velocity `ω` (the inverse of [`angular_velocity_acceleration`]).
+#[must_use]
+pub fn velocity_from_angular(q: UnitQuat, omega: DVec3) -> DVec4 {
+    DVec4::from(DQuat::from_vec4(omega.extend(0.0)) * q.0) * 0.5
+}
+
+/// The ambient velocity `q′ = ½·q·ω_b` of a unit-quaternion curve at `q` turning with the
+/// body-frame angular velocity `ω_b` (the inverse of [`angular_velocity_acceleration_body`]).
+#[must_use]
+pub fn velocity_from_angular_body(q: UnitQuat, omega_body: DVec3) -> DVec4 {
+    DVec4::from(q.0 * DQuat::from_vec4(omega_body.extend(0.0))) * 0.5
+}
