@@ -255,6 +255,12 @@ def expect_err(name):
                        "_near_antipodal_1e-9"))
     ):
         return NO_CONVERGENCE
+    # The cubic spline's C² equations are singular next to a near-antipodal step (dExp
+    # degenerates at a half turn) and ill-conditioned for time spacings 1e12 apart: a typed
+    # error, documented in ROBUSTNESS.md.
+    if name in ("cubic_s2_near_antipodal_1e-9", "cubic_s2_knots_mixed_1e-6_1e6",
+                "cubic_s3_knots_mixed_1e-6_1e6", "cubic_s5_knots_mixed_1e-6_1e6"):
+        return "points: the C² spline could not be solved"
     if name.endswith(("_beta1_0", "_beta1_negative")):
         return "params.beta1: must be > 0"
     if name.endswith("_beta2_negative"):

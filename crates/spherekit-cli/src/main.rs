@@ -4,7 +4,7 @@
 //! `spherekit`: sample curves described by JSON scenes.
 //!
 //! ```text
-//! spherekit sample SCENE.json|- [--deriv] [--continuity] [--samples N]
+//! spherekit sample SCENE.json|- [--deriv] [--frame space|body] [--continuity] [--samples N]
 //! spherekit render SCENE.json|- -o OUT.png [--size N]
 //! spherekit methods [--json]
 //! ```
@@ -20,10 +20,12 @@ const USAGE: &str = "\
 usage: spherekit <command> [options]
 
 commands:
-  sample SCENE.json [--deriv] [--continuity] [--samples N]
+  sample SCENE.json [--deriv] [--frame space|body] [--continuity] [--samples N]
       Sample the curve a scene describes and print one JSON object
       (`-` reads the scene from standard input).
       --deriv        also print velocity, acceleration (and angular velocity on S3)
+      --frame F      S3 angular velocity and acceleration in the space frame
+                     (default; ω = 2q′q̄) or the body frame (2q̄q′, scipy's)
       --continuity   also print the jumps of point, velocity and acceleration
                      at every joint (c0, c1, c2; g1 of the unit tangent) and
                      its class (C⁰, G¹, C¹, C², … Cⁿ)
@@ -118,6 +120,16 @@ fn sample(args: &[String]) -> Result<(), Failure> {
         match a.as_str() {
             "--deriv" => options.deriv = true,
             "--continuity" => options.continuity = true,
+            "--frame" => match it.next().map(String::as_str) {
+                Some("space") => options.body_frame = false,
+                Some("body") => options.body_frame = true,
+                other => {
+                    return Err(bad(format!(
+                        "--frame: \"{}\" is not a frame: use space or body",
+                        other.unwrap_or("")
+                    )));
+                }
+            },
             "--samples" => {
                 let v = it.next().ok_or_else(|| bad("--samples needs a number"))?;
                 let n: usize = v

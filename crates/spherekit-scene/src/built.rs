@@ -6,7 +6,7 @@
 use serde_json::{Map, Value, json};
 use spherekit::{
     Ambient, Curve, Jet, JointContinuity, Manifold, PointError, S2Point, SnPoint, UnitQuat, VecN,
-    angular_velocity_acceleration,
+    angular_velocity_acceleration, angular_velocity_acceleration_body,
 };
 
 use crate::scene::{SampleOptions, Scene};
@@ -77,7 +77,7 @@ impl<P: ScenePoint> Built<P> {
             let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
             self.curve.jet_many(&ts, &mut jets);
             for jet in &jets {
-                if let Some((w, a)) = P::angular(jet) {
+                if let Some((w, a)) = P::angular(jet, options.body_frame) {
                     omega.push(json!(w));
                     alpha.push(json!(a));
                 }
@@ -134,7 +134,7 @@ impl<P: ScenePoint> Built<P> {
                 flat(&ps)
             }
             "angular_velocity" | "angular_acceleration"
-                if P::angular(&self.curve.jet(domain[0])).is_none() =>
+                if P::angular(&self.curve.jet(domain[0]), false).is_none() =>
             {
                 Vec::new()
             }
@@ -144,7 +144,7 @@ impl<P: ScenePoint> Built<P> {
                 self.curve.jet_many(&ts, &mut jets);
                 let mut out = Vec::with_capacity(3 * jets.len());
                 for jet in &jets {
-                    match (field, P::angular(jet)) {
+                    match (field, P::angular(jet, false)) {
                         ("velocity", _) => out.extend(P::vector_coords(&jet.velocity)),
                         ("acceleration", _) => out.extend(P::vector_coords(&jet.acceleration)),
                         ("angular_velocity", Some((w, _))) => out.extend(w),
@@ -288,8 +288,11 @@ pub trait ScenePoint: Manifold + 'static {
     fn coords(&self) -> Vec<f64>;
     /// An ambient vector in the scene's coordinate order.
     fn vector_coords(v: &Self::Vector) -> Vec<f64>;
-    /// Angular velocity and acceleration (space frame) where the space has them.
-    fn angular(_jet: &Jet<Self>) -> Option<([f64; 3], [f64; 3])> {
+    /// An ambient vector from scene coordinates; `None` for the wrong count.
+    fn vector_from_coords(c: &[f64]) -> Option<Self::Vector>;
+    /// Angular velocity and acceleration where the space has them, in the space frame or
+    /// (`body`) the body frame.
+    fn angular(_jet: &Jet<Self>, _body: bool) -> Option<([f64; 3], [f64; 3])> {
         None
     }
 }
@@ -304,6 +307,9 @@ impl ScenePoint for S2Point {
     fn vector_coords(v: &spherekit::glam::DVec3) -> Vec<f64> {
         v.to_array().to_vec()
     }
+    fn vector_from_coords(c: &[f64]) -> Option<spherekit::glam::DVec3> {
+        (c.len() == 3).then(|| spherekit::glam::DVec3::from_slice(c))
+    }
 }
 
 impl ScenePoint for UnitQuat {
@@ -316,8 +322,18 @@ impl ScenePoint for UnitQuat {
     fn vector_coords(v: &spherekit::glam::DVec4) -> Vec<f64> {
         vec![v.w, v.x, v.y, v.z]
     }
-    fn angular(jet: &Jet<Self>) -> Option<([f64; 3], [f64; 3])> {
-        let (w, a) = angular_velocity_acceleration(jet.point, jet.velocity, jet.acceleration);
+    fn vector_from_coords(c: &[f64]) -> Option<spherekit::glam::DVec4> {
+        match c {
+            &[w, x, y, z] => Some(spherekit::glam::DVec4::new(x, y, z, w)),
+            _ => None,
+        }
+    }
+    fn angular(jet: &Jet<Self>, body: bool) -> Option<([f64; 3], [f64; 3])> {
+        let (w, a) = if body {
+            angular_velocity_acceleration_body(jet.point, jet.velocity, jet.acceleration)
+        } else {
+            angular_velocity_acceleration(jet.point, jet.velocity, jet.acceleration)
+        };
         Some((w.to_array(), a.to_array()))
     }
 }
@@ -331,5 +347,8 @@ impl ScenePoint for SnPoint {
     }
     fn vector_coords(v: &VecN) -> Vec<f64> {
         v.to_vec()
+    }
+    fn vector_from_coords(c: &[f64]) -> Option<VecN> {
+        Some(VecN::from(c.to_vec()))
     }
 }

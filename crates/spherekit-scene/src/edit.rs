@@ -358,15 +358,15 @@ impl Document {
         curve: usize,
         edit: impl FnOnce(&mut Vec<Value>) -> Result<Option<PointEdit>, EditError>,
     ) -> Result<(), EditError> {
-        let method = self.scene.curves.get(curve).map(|c| c.method);
+        let method = self.scene.curves.get(curve).map(|c| (c.method, c.closed));
         let mut doc = self.doc.clone();
         let c = curve_doc_mut(&mut doc, curve)?;
         let (count, change) = match c.get_mut("points") {
             Some(Value::Array(points)) => (points.len(), edit(points)?),
             _ => return Err(EditError::NoCurve(curve)),
         };
-        if let (Some(change), Some(method)) = (change, method) {
-            follow_points(c, method, count, change);
+        if let (Some(change), Some((method, closed))) = (change, method) {
+            follow_points(c, method, closed, count, change);
         }
         self.apply(doc)
     }
@@ -459,12 +459,13 @@ fn curve_doc_mut(
 }
 
 /// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 6] = [
+const CURVE_FIELDS: [&str; 7] = [
     "method",
     "points",
     "knots",
     "params",
     "canonicalize",
+    "closed",
     "color",
 ];
 
@@ -531,11 +532,20 @@ enum PointEdit {
 /// end), a copy of its neighbour for a parameter. A parameter list that would become empty
 /// becomes its last value (one number for every joint). Lists of another length, or of
 /// non-numbers, are left for the scene's validation to report.
-fn follow_points(curve: &mut Map<String, Value>, method: &Method, count: usize, edit: PointEdit) {
+fn follow_points(
+    curve: &mut Map<String, Value>,
+    method: &Method,
+    closed: bool,
+    count: usize,
+    edit: PointEdit,
+) {
+    // A closed curve's last knot is the time it returns to the first point: the list follows
+    // as if that were one more point at the end.
+    let extra = usize::from(closed);
     if let (Some(Value::Array(knots)), Some(len)) =
-        (curve.get_mut("knots"), method.knots.count(count))
+        (curve.get_mut("knots"), method.knots.count(count + extra))
     {
-        follow(knots, true, len, count, edit);
+        follow(knots, true, len, count + extra, edit);
     }
     if let Some(Value::Object(params)) = curve.get_mut("params") {
         for p in method.params {

@@ -112,6 +112,11 @@ fn spline_message(e: &SplineError) -> String {
         ),
         SplineError::Solve(e) => format!("params.solver: {e}"),
         SplineError::TimingNotRepresentable { index, .. } => format!("points[{index}]: {e}"),
+        SplineError::InvalidEndVelocity { start, .. } => format!(
+            "params.{}_velocity: {e}",
+            if *start { "start" } else { "end" }
+        ),
+        SplineError::AntipodalClosing => format!("closed: {e}"),
         // Errors added to the core later: its own words, which name no field.
         e => e.to_string(),
     }

@@ -34,7 +34,8 @@ pub enum ParamKind {
     /// A finite number. `min..=max` is the range a control offers; the construction checks
     /// validity (and may accept more).
     Number {
-        /// The value when the key is absent.
+        /// The value when the key is absent; NaN (`null` in JSON) when the construction then
+        /// chooses its own.
         default: f64,
         /// Lower end of the offered range.
         min: f64,
@@ -43,7 +44,8 @@ pub enum ParamKind {
     },
     /// A whole number in `min..=max` (checked).
     Integer {
-        /// The value when the key is absent.
+        /// The value when the key is absent; below `min` when the construction then chooses
+        /// its own (`null` in JSON).
         default: u64,
         /// The smallest value.
         min: u64,
@@ -57,6 +59,8 @@ pub enum ParamKind {
     },
     /// One of a list of names; the first is the default.
     Choice(&'static [&'static str]),
+    /// A vector of finite numbers (a velocity); absent by default.
+    Vector,
 }
 
 /// How a per-joint list lines up with the points: it has `points − 2·skip` entries, the first
@@ -121,13 +125,14 @@ impl Param {
             ),
             ParamKind::Integer { default, min, max } => (
                 "integer",
-                json!({ "default": default, "min": min, "max": max }),
+                json!({ "default": (default >= min).then_some(default), "min": min, "max": max }),
             ),
             ParamKind::Bool { default } => ("bool", json!({ "default": default })),
             ParamKind::Choice(choices) => (
                 "choice",
                 json!({ "default": choices[0], "choices": choices }),
             ),
+            ParamKind::Vector => ("vector", json!({ "default": null })),
         };
         let mut out = json!({
             "name": self.name,
@@ -322,6 +327,20 @@ impl<'a> Params<'a> {
                     )
                 }),
         }
+    }
+
+    /// A list of finite numbers, or `None` when absent.
+    pub(crate) fn vector(&mut self, name: &'static str) -> Result<Option<Vec<f64>>, SceneError> {
+        let _ = self.schema(name);
+        let Some(v) = self.get(name) else {
+            return Ok(None);
+        };
+        let bad = || field_error(format!("params.{name}"), "must be a list of finite numbers");
+        let list = v.as_array().ok_or_else(bad)?;
+        list.iter()
+            .map(|x| x.as_f64().filter(|x| x.is_finite()).ok_or_else(bad))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
     }
 
     /// Rejects keys no accessor asked for.

@@ -30,6 +30,7 @@ pub static METHODS: &[&Method] = &[
     &methods::beta::METHOD,
     &methods::arc_blend::METHOD,
     &methods::corner_blend::METHOD,
+    &methods::cubic::METHOD,
 ];
 
 /// A curve construction as scenes name it: what it is, what it takes, and how to build it.
@@ -52,6 +53,9 @@ pub struct Method {
     pub min_points: usize,
     /// Whether the curve passes through its points (otherwise the renderer draws their polygon).
     pub interpolates: bool,
+    /// Whether it has a closed form (`"closed": true`: after the last point the curve returns
+    /// to the first, as smooth at the seam as at the other joints).
+    pub closes: bool,
     /// Whether the curve is one piece whose degree grows with the number of points (Bézier
     /// curves: an evaluation costs O(n²)), rather than pieces between consecutive points.
     pub single_piece: bool,
@@ -119,7 +123,8 @@ pub enum KnotRule {
 }
 
 impl KnotRule {
-    /// The number of knots for `points` points, where the method takes knots.
+    /// The number of knots for `points` points of an open curve, where the method takes
+    /// knots (a closed curve has one more: the time at which it returns to the first point).
     #[must_use]
     pub fn count(self, points: usize) -> Option<usize> {
         match self {
@@ -166,6 +171,7 @@ impl Method {
             "min_points": self.min_points,
             "interpolates": self.interpolates,
             "single_piece": self.single_piece,
+            "closes": self.closes,
             "params": self.params.iter().map(Param::to_json).collect::<Vec<_>>(),
         })
     }

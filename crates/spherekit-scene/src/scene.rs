@@ -38,6 +38,8 @@ struct RawScene {
     #[serde(default)]
     canonicalize: Option<bool>,
     #[serde(default)]
+    closed: Option<bool>,
+    #[serde(default)]
     color: Option<String>,
     #[serde(default)]
     curves: Option<Vec<RawCurve>>,
@@ -61,6 +63,8 @@ struct RawCurve {
     params: Option<Map<String, Value>>,
     #[serde(default)]
     canonicalize: Option<bool>,
+    #[serde(default)]
+    closed: Option<bool>,
     #[serde(default)]
     color: Option<String>,
 }
@@ -87,6 +91,8 @@ pub struct CurveSpec {
     pub params: Map<String, Value>,
     /// Whether S³ keys are canonicalised with [`unflip`] before construction.
     pub canonicalize: bool,
+    /// Whether the curve is a closed loop (after the last point it returns to the first).
+    pub closed: bool,
     /// The colour to draw it in, `[r, g, b]`, when the scene gives one (`"#rrggbb"`).
     pub color: Option<[u8; 3]>,
 }
@@ -191,6 +197,13 @@ impl CurveSpec {
                 "applies to S3 (quaternion) scenes only",
             ));
         }
+        let closed = raw.closed.unwrap_or(false);
+        if closed && !method.closes {
+            return Err(field_error(
+                "closed",
+                format!("method \"{}\" has no closed form", method.id),
+            ));
+        }
         if raw.knots.is_some() {
             match method.knots {
                 KnotRule::PerPoint { .. } => {}
@@ -220,6 +233,7 @@ impl CurveSpec {
             knots: raw.knots,
             params: raw.params.unwrap_or_default(),
             canonicalize: raw.canonicalize.unwrap_or(true),
+            closed,
             color: parse_color("color", raw.color)?,
         })
     }
@@ -246,6 +260,7 @@ impl CurveSpec {
         let input = Input {
             points,
             knots: self.knots.clone(),
+            closed: self.closed,
             params: Params::new(self.method, &self.params),
         };
         (self.method.build)(input).map_err(|e| match e {
@@ -275,6 +290,7 @@ pub(crate) enum Points {
 pub(crate) struct Input<'a> {
     pub(crate) points: Points,
     pub(crate) knots: Option<Vec<f64>>,
+    pub(crate) closed: bool,
     pub(crate) params: Params<'a>,
 }
 
@@ -303,11 +319,12 @@ impl Scene {
                 if raw.knots.is_some()
                     || raw.params.is_some()
                     || raw.canonicalize.is_some()
+                    || raw.closed.is_some()
                     || raw.color.is_some()
                 {
                     return Err(field_error(
                         "curves",
-                        "with \"curves\", give knots, params, canonicalize and color inside each curve",
+                        "with \"curves\", give knots, params, canonicalize, closed and color inside each curve",
                     ));
                 }
                 if curves.is_empty() {
@@ -332,6 +349,7 @@ impl Scene {
                     knots: raw.knots,
                     params: raw.params,
                     canonicalize: raw.canonicalize,
+                    closed: raw.closed,
                     color: raw.color,
                 };
                 vec![CurveSpec::validate(space, raw_curve)?]
@@ -450,7 +468,7 @@ impl Scene {
             curves,
             SampleOptions {
                 deriv,
-                continuity: false,
+                ..SampleOptions::default()
             },
         )
     }
@@ -490,4 +508,7 @@ pub struct SampleOptions {
     pub deriv: bool,
     /// Jumps at the joints.
     pub continuity: bool,
+    /// S³: report angular velocity and acceleration in the body frame (`ω_body = q̄·ω·q`, as
+    /// scipy's `RotationSpline` does) instead of the space frame.
+    pub body_frame: bool,
 }

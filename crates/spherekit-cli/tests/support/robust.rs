@@ -167,6 +167,7 @@ pub fn check_scene_capped(
         SampleOptions {
             deriv: true,
             continuity: true,
+            body_frame: false,
         },
     );
     if !all_finite(&json) {
@@ -333,6 +334,10 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
             }
             ParamKind::Bool { default } => json!(!default),
             ParamKind::Choice(choices) => json!(pick(u, choices)?),
+            ParamKind::Vector => {
+                let n = if parsed == Space::S3 { 3 } else { dim };
+                json!((0..n).map(|_| coord(u)).collect::<ArbResult<Vec<_>>>()?)
+            }
         };
         params.insert(p.name.into(), value);
     }

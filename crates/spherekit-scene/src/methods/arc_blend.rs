@@ -4,7 +4,7 @@
 //! `arc-blend`: [`spherekit::ArcBlend`].
 
 use serde_json::json;
-use spherekit::{ArcBlend, MAX_BLEND_ORDER};
+use spherekit::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
@@ -36,18 +36,42 @@ pub(crate) static METHOD: Method = Method {
     min_points: 3,
     interpolates: true,
     single_piece: false,
-    params: &[ORDER],
+    closes: false,
+    params: &[
+        ORDER,
+        Param::number(
+            "timing",
+            "timing",
+            "the parameter: the book's knots while representable, else arc length (auto); the book's knots or an error; the mean arc lengths; uniform. Every timing traces the same curve, Cⁿ in t",
+            [0.0; 3],
+        )
+        .with_kind(ParamKind::Choice(&["auto", "book", "arc-length", "uniform"])),
+    ],
     build,
 };
 
 fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let order = input.params.integer("order")?;
+    let timing = match input.params.choice("timing")? {
+        "book" => ArcBlendTiming::Book,
+        "arc-length" => ArcBlendTiming::ArcLength,
+        "uniform" => ArcBlendTiming::Uniform,
+        _ => ArcBlendTiming::Auto,
+    };
     input.params.finish()?;
     Ok(on_every_sphere!(input.points, |p| {
-        let curve = ArcBlend::try_new(p.clone(), order)?;
+        let curve = ArcBlend::try_new_with(p.clone(), order, timing.clone())?;
         let knots = curve.knots().to_vec();
-        Built::new(curve, p)
+        let used = curve.timing().name();
+        let built = Built::new(curve, p)
             .with_info("knots", json!(knots))
-            .with_order(order)
+            .with_order(order);
+        // `info.timing` says when the curve is not on the book's knots (auto switched away
+        // from them, or another timing was asked for).
+        if used == "book" {
+            built
+        } else {
+            built.with_info("timing", json!(used))
+        }
     }))
 }

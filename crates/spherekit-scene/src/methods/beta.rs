@@ -23,6 +23,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: true,
     single_piece: false,
+    closes: false,
     params: &[
         Param::number(
             "beta1",
@@ -55,21 +56,21 @@ pub(crate) static METHOD: Method = Method {
         Param::number(
             "tolerance",
             "tolerance",
-            "the solver's step tolerance (radians)",
-            [0.0; 3],
+            "the solver's step tolerance (radians; absent: the solver's own)",
+            [f64::NAN, 0.0, 0.0],
         )
         .advanced(),
         Param::number(
             "residual_tolerance",
             "residual tolerance",
-            "the largest distance (radians) from the curve to a point the solve accepts",
-            [0.0; 3],
+            "the largest distance (radians) from the curve to a point the solve accepts (absent: the solver's own)",
+            [f64::NAN, 0.0, 0.0],
         )
         .advanced(),
         Param::number(
             "max_iterations",
             "max iterations",
-            "the solver's iteration limit",
+            "the solver's iteration limit (absent: the solver's own)",
             [0.0; 3],
         )
         .with_kind(ParamKind::Integer {

@@ -21,6 +21,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: false,
     single_piece: true,
+    closes: false,
     params: &[],
     build,
 };

@@ -23,6 +23,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 3,
     interpolates: false,
     single_piece: false,
+    closes: false,
     params: &[
         super::arc_blend::ORDER,
         Param::number(

@@ -23,6 +23,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 4,
     interpolates: false,
     single_piece: false,
+    closes: false,
     params: &[
         Param::number(
             "gamma",

@@ -10,6 +10,7 @@ pub(crate) mod bezier_kim;
 pub(crate) mod bspline_kim;
 pub(crate) mod catmull_rom;
 pub(crate) mod corner_blend;
+pub(crate) mod cubic;
 pub(crate) mod gamma;
 pub(crate) mod geodesic;
 pub(crate) mod nlerp;

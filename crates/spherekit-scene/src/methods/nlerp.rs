@@ -21,6 +21,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: true,
     single_piece: false,
+    closes: false,
     params: &[],
     build,
 };
