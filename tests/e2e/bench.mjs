@@ -1,5 +1,5 @@
 // Frame-time benchmark of the playground in Debian's headless Chromium: opens index.html?bench
-// (20 keys on S³, 4 000 samples, 800 × 800; see bench() in web/main.js) and prints what the page
+// (20 keys on S³, 4 000 samples, 800 × 800; see web/js/bench.js) and prints what the page
 // reports. Needs `just web` first; run with `just bench-web`. Figures go to BENCHMARKS.md.
 import { createServer } from 'node:http';
 import { readFile } from 'node:fs/promises';

@@ -251,7 +251,7 @@ test('every malformed scene of tests/robustness/bad is refused by the wasm API a
   const fine = (c, message) => (c.utf8 ? message.includes(c.want) : true)
     && !message.includes('\n') && !/panicked|unreachable|RuntimeError/.test(message);
 
-  // 1. The wasm API, from the module web/main.js initialised.
+  // 1. The wasm API, from the module web/js/boot.js initialised.
   const api = await page.evaluate(async (cases) => {
     const sk = await import('./pkg/spherekit_wasm.js');
     const shared = window.spherekitPage.handle() instanceof sk.Playground;

@@ -1,0 +1,144 @@
+// The parameter controls of one curve, generated from its method's registry entry
+// (sk.methods(): the schema the scene format validates with). Nothing here knows a method:
+// a number or integer gets a slider over the schema's range, a choice a select, a bool a
+// checkbox, a per-joint parameter a "per joint" toggle, a method with `knots: {skip}` a knots
+// field. Solver settings (`advanced`) and parameters of other spheres get no control; every
+// parameter stays editable in the "params as JSON" box.
+import { inSpaces } from './state.js';
+
+/**
+ * The controls of curve `c` (its scene description `curve`, on `space`) for registry entry
+ * `method`. `edit.param(name, value, { live })` sets a parameter (null removes it; `live` while
+ * a slider moves), `edit.field(name, value)` a curve field (`knots`, `params`; null removes it),
+ * `edit.error(message)` reports text the page could not read.
+ */
+export function curveControls(c, curve, space, method, edit) {
+  const controls = [];
+  const params = curve.params ?? {};
+  const n = curve.points.length;
+  for (const spec of method?.params ?? []) {
+    if (spec.advanced || !inSpaces(spec.spaces, space)) continue;
+    const value = params[spec.name] ?? spec.default;
+    if (spec.type === 'choice') controls.push(choiceControl(spec, value, edit));
+    else if (spec.type === 'bool') controls.push(boolControl(spec, value, edit));
+    else controls.push(...numberControls(spec, value, n, edit));
+  }
+  if (method?.knots?.skip !== undefined) controls.push(knotsField(c, curve, n - 2 * method.knots.skip, edit));
+  controls.push(paramsJson(c, params, edit));
+  return controls;
+}
+
+function choiceControl(spec, value, edit) {
+  const label = document.createElement('label');
+  label.className = 'row slider';
+  const select = document.createElement('select');
+  for (const ch of spec.choices) select.append(new Option(ch, ch));
+  select.value = value;
+  select.addEventListener('change', () => edit.param(spec.name, select.value === spec.default ? null : select.value));
+  label.append(`${spec.label} `, select);
+  return label;
+}
+
+function boolControl(spec, value, edit) {
+  const label = document.createElement('label');
+  label.className = 'check';
+  const box = document.createElement('input');
+  box.type = 'checkbox';
+  box.checked = Boolean(value);
+  box.addEventListener('change', () => edit.param(spec.name, box.checked === spec.default ? null : box.checked));
+  label.append(box, ` ${spec.label}`);
+  return label;
+}
+
+/** One slider, or one per entry of a per-joint list, and the "per joint" toggle. */
+function numberControls(spec, value, n, edit) {
+  const controls = [];
+  const joints = spec.per_joint ? n - 2 * spec.per_joint.skip : 0;
+  const first = spec.per_joint?.first ?? 0;
+  const list = Array.isArray(value) ? value : null;
+  if (list) {
+    list.forEach((v, k) => controls.push(slider(spec, `${spec.label} [${k + first}]`, v, (x, live) => {
+      const next = list.slice();
+      next[k] = x;
+      edit.param(spec.name, next, { live });
+    })));
+  } else {
+    controls.push(slider(spec, spec.label, value, (x, live) => edit.param(spec.name, x, { live })));
+  }
+  if (joints > 1 || list) {
+    const label = document.createElement('label');
+    label.className = 'check muted';
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.checked = Boolean(list);
+    box.addEventListener('change', () => edit.param(spec.name, box.checked ? new Array(joints).fill(value) : list[0]));
+    label.append(box, ` ${spec.label} per joint`);
+    controls.push(label);
+  }
+  return controls;
+}
+
+/** A labelled range input; `set(value, live)` runs while dragging (live) and on release. */
+function slider(spec, name, value, set) {
+  const integer = spec.type === 'integer';
+  const row = document.createElement('label');
+  row.className = 'row slider';
+  const range = document.createElement('input');
+  range.type = 'range';
+  range.min = String(Math.min(spec.min, value));
+  range.max = String(Math.max(spec.max, value));
+  range.step = integer ? '1' : 'any';
+  range.value = String(value);
+  const out = document.createElement('output');
+  const show = (v) => (integer ? String(v) : v.toFixed(3));
+  out.textContent = show(value);
+  range.addEventListener('input', () => {
+    out.textContent = show(Number(range.value));
+    set(Number(range.value), true);
+  });
+  range.addEventListener('change', () => set(Number(range.value), false));
+  row.append(`${name} `, range, out);
+  return row;
+}
+
+function knotsField(c, curve, count, edit) {
+  const label = document.createElement('label');
+  label.textContent = `knots (${count}, increasing; empty = 0, 1, 2, …) `;
+  const input = document.createElement('input');
+  input.className = 'params';
+  input.spellcheck = false;
+  input.value = (curve.knots ?? []).join(', ');
+  input.placeholder = 'uniform';
+  input.setAttribute('aria-label', `Knots of curve ${c}`);
+  input.addEventListener('change', () => {
+    const text = input.value.trim();
+    edit.field('knots', text ? text.split(/[\s,]+/).filter(Boolean).map(Number) : null);
+  });
+  label.append(input);
+  return label;
+}
+
+/** Every parameter (solver settings too) as JSON. */
+function paramsJson(c, params, edit) {
+  const details = document.createElement('details');
+  const summary = document.createElement('summary');
+  summary.className = 'muted';
+  summary.textContent = 'params as JSON';
+  const input = document.createElement('input');
+  input.className = 'params';
+  input.spellcheck = false;
+  input.value = JSON.stringify(params);
+  input.setAttribute('aria-label', `Parameters of curve ${c} (JSON)`);
+  input.addEventListener('change', () => {
+    let obj;
+    try {
+      obj = JSON.parse(input.value || '{}');
+    } catch (e) {
+      edit.error(`params: ${e.message}`);
+      return;
+    }
+    edit.field('params', obj && typeof obj === 'object' && Object.keys(obj).length ? obj : null);
+  });
+  details.append(summary, input);
+  return details;
+}
