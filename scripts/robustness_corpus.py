@@ -33,10 +33,40 @@ KNOTS_AT_INNER = set()  # knots at the inner points p₁ … p_{n−2} only
 MIN_POINTS = {}
 
 
+REGISTRY = []
+DICT = "fuzz/scene.dict"
+# Scene keys and values of the format itself (the registry adds methods and parameters).
+DICT_TOKENS = ["space", "method", "points", "knots", "params", "canonicalize", "closed",
+               "quaternion_order", "xyzw", "samples", "eval_at", "curves", "view", "color",
+               "S1", "S2", "S3", "S5"]
+DICT_LITERALS = ["1e-9", "1e300", "-1e300", "1e-300", "0.999999999", "-1", "true", "false"]
+
+
+def fuzz_dict():
+    """The libFuzzer dictionary of the scene_bytes target: the format's keys and every
+    registered method id, parameter name and choice."""
+    words = list(DICT_TOKENS)
+    for m in REGISTRY:
+        words.append(m["id"])
+        for p in m["params"]:
+            words.append(p["name"])
+            words += p.get("choices", [])
+    seen = []
+    for w in words:
+        if w not in seen:
+            seen.append(w)
+    lines = ["# Scene tokens for the scene_bytes target (libFuzzer -dict), written by",
+             "# scripts/robustness_corpus.py from the method registry."]
+    lines += ['"\\"' + w + '\\""' for w in seen]
+    lines += ['"' + w + '"' for w in DICT_LITERALS]
+    return "\n".join(lines) + "\n"
+
+
 def load_registry(path):
     """Fills the tables above from `spherekit methods --json`."""
     with open(path) as f:
         registry = json.load(f)
+    REGISTRY.extend(registry)
     for m in registry:
         METHODS[m["id"]] = ["S3"] if m["spaces"] == "S3" else ALL_SPACES
         knots = m["knots"]
@@ -384,6 +414,20 @@ def bad_cases():
         ("beta_max_iterations_huge", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"max_iterations":1e12}}', "params.max_iterations: must be a whole number from 1 to 1000000"),
         ("beta_unknown_solver", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"solver":"gauss"}}', "params.solver: must be one of: newton, jacobi"),
         ("catmull_rom_bad_tangent", '{"space":"S3","method":"catmull-rom","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"tangent":"chordal"}}', "params.tangent: must be one of: quaternion, intrinsic"),
+        ("closed_geodesic", '{"space":"S2","method":"geodesic","closed":true,"points":[[1,0,0],[0,1,0],[0,0,1]]}', 'closed: method "geodesic" has no closed form'),
+        ("closed_not_bool", '{"space":"S2","method":"cubic","closed":"yes","points":[[1,0,0],[0,1,0],[0,0,1]]}', "invalid type: string"),
+        ("closed_cubic_knot_count", '{"space":"S3","method":"cubic","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0]],"knots":[0,1,2]}', "knots: expected 4 knots, got 3"),
+        ("closed_cubic_two_keys", '{"space":"S2","method":"cubic","closed":true,"points":[[1,0,0],[0,1,0]]}', "points: this method needs at least 3 points, got 2"),
+        ("closed_cubic_antipodal_seam", '{"space":"S2","method":"cubic","closed":true,"points":[[1,0,0],[0,1,0],[-1,0,0]]}', "closed: the last and the first point are antipodal"),
+        ("cubic_clamped_without_velocity", '{"space":"S2","method":"cubic","params":{"end":"clamped"},"points":[[1,0,0],[0,1,0]]}', 'params.start_velocity: is needed with "end": "clamped"'),
+        ("cubic_velocity_not_tangent", '{"space":"S2","method":"cubic","params":{"end":"clamped","start_velocity":[1,0,0],"end_velocity":[0,0,1]},"points":[[1,0,0],[0,1,0]]}', "params.start_velocity: the start velocity is not tangent"),
+        ("cubic_velocity_without_clamped", '{"space":"S2","method":"cubic","params":{"end_velocity":[0,0,1]},"points":[[1,0,0],[0,1,0]]}', 'params.end_velocity: applies with "end": "clamped" only'),
+        ("cubic_velocity_nan", '{"space":"S3","method":"cubic","params":{"end":"clamped","start_velocity":[0,"x",0],"end_velocity":[0,0,1]},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.start_velocity: must be a list of finite numbers"),
+        ("cubic_angular_velocity_length", '{"space":"S3","method":"cubic","params":{"end":"clamped","start_velocity":[0,0],"end_velocity":[0,0,1]},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.start_velocity: must be an angular velocity [x, y, z], got 2 numbers"),
+        ("cubic_knots_not_increasing", '{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0],[0,0,1]],"knots":[0,2,1]}', "knots[2] is not greater than knots[1]"),
+        ("quaternion_order_unknown", '{"space":"S3","quaternion_order":"zyxw","method":"geodesic","points":[[1,0,0,0],[0,1,0,0]]}', 'quaternion_order: "zyxw" is not an order'),
+        ("quaternion_order_on_s2", '{"space":"S2","quaternion_order":"xyzw","method":"geodesic","points":[[1,0,0],[0,1,0]]}', "quaternion_order: applies to S3 (quaternion) scenes only"),
+        ("arc_blend_unknown_timing", '{"space":"S2","method":"arc-blend","params":{"timing":"fast"},"points":[[1,0,0],[0,1,0],[0,0,1]]}', "params.timing: must be one of: auto, book, arc-length, uniform"),
         ("gamma_last_edge_unknown", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"last_edge":"paper"}}', "params.last_edge: must be one of: formula, paper-example"),
     ]
 
@@ -443,6 +487,9 @@ def main():
         with tempfile.TemporaryDirectory() as tmp:
             write(tmp)
             diff = differences(root, tmp)
+        with open(DICT) as f:
+            if f.read() != fuzz_dict():
+                diff.append(DICT)
         if diff:
             print(f"tests/robustness is not what scripts/robustness_corpus.py writes ({len(diff)} files differ, "
                   f"e.g. {', '.join(diff[:5])}): run `just corpus` and commit", file=sys.stderr)
@@ -450,6 +497,8 @@ def main():
         print("tests/robustness matches the generator")
         return
     n_bad, n_ok, n_err = write(root)
+    with open(DICT, "w") as f:
+        f.write(fuzz_dict())
     print(f"{n_bad} bad scenes in {root}/bad; {n_ok} ok, {n_err} err cases in {OUT}")
 
 

@@ -9,7 +9,8 @@ import { inSpaces } from './state.js';
 /**
  * The controls of curve `c` (its scene description `curve`, on `space`) for registry entry
  * `method`. `edit.param(name, value, { live })` sets a parameter (null removes it; `live` while
- * a slider moves), `edit.field(name, value)` a curve field (`knots`, `params`; null removes it),
+ * a slider moves), `edit.field(name, value)` a curve field (`knots`, `params`, `closed`; null
+ * removes it), `edit.fields({ name: value, … })` several at once,
  * `edit.error(message)` reports text the page could not read.
  */
 export function curveControls(c, curve, space, method, edit) {
@@ -23,9 +24,27 @@ export function curveControls(c, curve, space, method, edit) {
     else if (spec.type === 'bool') controls.push(boolControl(spec, value, edit));
     else controls.push(...numberControls(spec, value, n, edit));
   }
-  if (method?.knots?.skip !== undefined) controls.push(knotsField(c, curve, n - 2 * method.knots.skip, edit));
+  if (method?.closes) controls.push(closedToggle(curve, edit));
+  if (method?.knots?.skip !== undefined) {
+    // A closed curve has one more knot: the time it returns to the first point.
+    const count = n - 2 * method.knots.skip + (curve.closed ? 1 : 0);
+    controls.push(knotsField(c, curve, count, edit));
+  }
   controls.push(paramsJson(c, params, edit));
   return controls;
+}
+
+/** "closed": the curve returns to its first point (methods whose entry says `closes`). */
+function closedToggle(curve, edit) {
+  const label = document.createElement('label');
+  label.className = 'check';
+  const box = document.createElement('input');
+  box.type = 'checkbox';
+  box.checked = Boolean(curve.closed);
+  // The knots of an open curve do not fit a closed one (one more): they go.
+  box.addEventListener('change', () => edit.fields({ closed: box.checked ? true : null, knots: null }));
+  label.append(box, ' closed loop');
+  return label;
 }
 
 function choiceControl(spec, value, edit) {

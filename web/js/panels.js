@@ -102,7 +102,8 @@ function curveCard(c, color, space) {
   card.append(p);
   card.append(...curveControls(c, curve, space, method, {
     param: (name, value, opts) => setParam(c, name, value, opts),
-    field: (name, value) => setCurveField(c, curve, name, value),
+    field: (name, value) => setCurveField(c, curve, { [name]: value }),
+    fields: (changes) => setCurveField(c, curve, changes),
     error: showError,
   }));
   return card;
@@ -114,12 +115,15 @@ function setParam(c, name, value, { live = false } = {}) {
   else if (!live) renderPanels();
 }
 
-/** Replaces one field of curve `c` (null removes it), keeping its points and other fields. */
-function setCurveField(c, curve, name, value) {
+/** Replaces fields of curve `c` (`{ name: value }`, null removes one), keeping its points and
+ * other fields. */
+function setCurveField(c, curve, changes) {
   const fields = { ...curve };
   delete fields.points;
-  if (value === null) delete fields[name];
-  else fields[name] = value;
+  for (const [name, value] of Object.entries(changes)) {
+    if (value === null) delete fields[name];
+    else fields[name] = value;
+  }
   if (attempt(() => state.pg.set_curve(c, JSON.stringify(fields)))) changed();
 }
 

@@ -90,6 +90,15 @@ impl<P: ScenePoint> Built<P> {
             self.curve.eval_many(&ts, &mut ps);
             points.extend(ps.iter().map(|p| json!(p.coords())));
         }
+        if scene.scalar_last && P::angular(&self.curve.jet(domain[0]), false).is_some() {
+            for list in [&mut points, &mut velocity, &mut acceleration] {
+                for v in list.iter_mut() {
+                    if let Value::Array(a) = v {
+                        a.rotate_left(1);
+                    }
+                }
+            }
+        }
         out.insert("domain".into(), json!(domain));
         out.insert("t".into(), json!(ts));
         out.insert("points".into(), Value::Array(points));
@@ -101,7 +110,20 @@ impl<P: ScenePoint> Built<P> {
                 out.insert("angular_acceleration".into(), Value::Array(alpha));
             }
         }
-        let list = |ps: &[P]| Value::Array(ps.iter().map(|p| json!(p.coords())).collect());
+        let reorder = scene.scalar_last && P::angular(&self.curve.jet(domain[0]), false).is_some();
+        let list = |ps: &[P]| {
+            Value::Array(
+                ps.iter()
+                    .map(|p| {
+                        let mut c = p.coords();
+                        if reorder {
+                            c.rotate_left(1);
+                        }
+                        json!(c)
+                    })
+                    .collect(),
+            )
+        };
         if !self.controls.is_empty() {
             out.insert("controls".into(), list(&self.controls));
         }
@@ -120,6 +142,21 @@ impl<P: ScenePoint> Built<P> {
     }
 
     fn sample_field(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
+        let mut out = self.sample_field_wxyz(scene, field)?;
+        let quaternions = P::angular(&self.curve.jet(self.curve.domain()[0]), false).is_some();
+        let rows = matches!(
+            field,
+            "points" | "velocity" | "acceleration" | "controls" | "auxiliary"
+        );
+        if scene.scalar_last && quaternions && rows {
+            for row in out.chunks_exact_mut(4) {
+                row.rotate_left(1);
+            }
+        }
+        Some(out)
+    }
+
+    fn sample_field_wxyz(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
         let domain = self.curve.domain();
         let flat = |ps: &[P]| ps.iter().flat_map(ScenePoint::coords).collect();
         Some(match field {

@@ -149,7 +149,8 @@ impl Document {
         }
     }
 
-    /// Point `index` of curve `curve` as written.
+    /// Point `index` of curve `curve` as written (S³ keys always `[w, x, y, z]`, whatever
+    /// the scene's `quaternion_order`).
     ///
     /// # Errors
     ///
@@ -161,10 +162,24 @@ impl Document {
             .and_then(|p| p.get(index))
             .and_then(Value::as_array)
             .ok_or(EditError::NoPoint(index))?;
-        Ok(p.iter().filter_map(Value::as_f64).collect())
+        let mut c: Vec<f64> = p.iter().filter_map(Value::as_f64).collect();
+        if self.scene.scalar_last && c.len() == 4 {
+            c.rotate_right(1);
+        }
+        Ok(c)
     }
 
-    /// Sets point `index` of curve `curve` (normalised when the curve is built).
+    /// A point given as `[w, x, y, z]` (S³) in the document's own order.
+    fn written(&self, coords: &[f64]) -> Result<Value, EditError> {
+        let mut c = coords.to_vec();
+        if self.scene.scalar_last && c.len() == 4 {
+            c.rotate_left(1);
+        }
+        point_value(&c)
+    }
+
+    /// Sets point `index` of curve `curve` (normalised when the curve is built; S³ keys given
+    /// as `[w, x, y, z]`).
     ///
     /// # Errors
     ///
@@ -175,7 +190,7 @@ impl Document {
         index: usize,
         coords: &[f64],
     ) -> Result<(), EditError> {
-        let p = point_value(coords)?;
+        let p = self.written(coords)?;
         self.edit_points(curve, |points| {
             let slot = points.get_mut(index).ok_or(EditError::NoPoint(index))?;
             *slot = p;
@@ -195,7 +210,7 @@ impl Document {
         index: usize,
         coords: &[f64],
     ) -> Result<(), EditError> {
-        let p = point_value(coords)?;
+        let p = self.written(coords)?;
         self.edit_points(curve, |points| {
             if index > points.len() {
                 return Err(EditError::NoPoint(index));

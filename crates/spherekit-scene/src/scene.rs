@@ -48,6 +48,8 @@ struct RawScene {
     #[serde(default)]
     eval_at: Option<Vec<f64>>,
     #[serde(default)]
+    quaternion_order: Option<String>,
+    #[serde(default)]
     view: Option<Value>,
 }
 
@@ -112,6 +114,9 @@ pub struct Scene {
     pub sampling: Sampling,
     /// Rendering options, passed through to the renderer.
     pub view: Option<Value>,
+    /// S³: whether the scene writes quaternions scalar last, `[x, y, z, w]` (scipy's order),
+    /// in its points and in the sample output. [`CurveSpec::points`] are always `[w, x, y, z]`.
+    pub scalar_last: bool,
     /// Whether the curves came as a `curves` list (errors and output then name `curves[i]`).
     listed: bool,
 }
@@ -313,6 +318,24 @@ impl Scene {
         let raw: RawScene =
             serde_json::from_str(text).map_err(|e| SceneError::Json(json_error(text, &e)))?;
         let space = Space::parse(&raw.space)?;
+        let scalar_last = match raw.quaternion_order.as_deref() {
+            None | Some("wxyz") => false,
+            Some("xyzw") => true,
+            Some(other) => {
+                return Err(field_error(
+                    "quaternion_order",
+                    format!(
+                        "\"{other}\" is not an order: use \"wxyz\" (scalar first, the default) or \"xyzw\" (scalar last, as scipy)"
+                    ),
+                ));
+            }
+        };
+        if raw.quaternion_order.is_some() && space != Space::S3 {
+            return Err(field_error(
+                "quaternion_order",
+                "applies to S3 (quaternion) scenes only",
+            ));
+        }
         let listed = raw.curves.is_some();
         let curves = match (raw.curves, raw.method, raw.points) {
             (Some(curves), None, None) => {
@@ -379,11 +402,20 @@ impl Scene {
             (None, None) => Sampling::Uniform(DEFAULT_SAMPLES),
         };
         check_total(curves.len(), &sampling)?;
+        let mut curves = curves;
+        if scalar_last {
+            for c in &mut curves {
+                for p in &mut c.points {
+                    p.rotate_right(1);
+                }
+            }
+        }
         Ok(Self {
             space,
             curves,
             sampling,
             view: raw.view,
+            scalar_last,
             listed,
         })
     }
