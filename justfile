@@ -29,12 +29,12 @@ core-features:
     cargo test -p spherekit --locked --lib --tests
     cargo check -p spherekit --locked --no-default-features --features libm
 
-# The committed robustness corpus is what the generator writes from the method registry
+# The committed robustness corpus and fuzz dictionary are what the generator writes from the registry
 corpus-check:
     cargo run --quiet --locked -p spherekit-cli -- methods --json > target/registry.json
     python3 scripts/robustness_corpus.py --registry target/registry.json --check
 
-# Rewrite tests/robustness from the generator (after adding a method or a case)
+# Rewrite tests/robustness and fuzz/scene.dict from the generator (after adding a method or a case)
 corpus:
     cargo run --quiet --locked -p spherekit-cli -- methods --json > target/registry.json
     python3 scripts/robustness_corpus.py --registry target/registry.json
