@@ -17,15 +17,14 @@
     reason = "tests unwrap known-valid fixtures; counts are far below 2⁵³"
 )]
 
-mod support;
-
 use spherekit::glam::{DQuat, DVec3};
 use spherekit::{
-    Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSpline, CatmullRom, CornerBlend,
-    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, BsplineKim,
-    LastEdge, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad, UnitQuat,
+    Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSpline, BsplineKim, CatmullRom, CornerBlend,
+    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
+    Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad, UnitQuat,
 };
-use support::Rng;
+
+use crate::support::Rng;
 
 /// Keys per sequence.
 const KEYS: usize = 100_000;
@@ -426,7 +425,9 @@ fn arc_blend_book_timing_error_message() {
     assert!(spacing > 0.0 && ratio > 0.0 && knot > 0.0, "{err:?}");
     let message = err.to_string();
     assert!(
-        message.starts_with(&format!("the book's arc-blend knots cannot be represented at point {index}")),
+        message.starts_with(&format!(
+            "the book's arc-blend knots cannot be represented at point {index}"
+        )),
         "{message}"
     );
     assert!(message.contains("ψ/φ"), "{message}");
