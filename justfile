@@ -53,7 +53,7 @@ duplicates:
 
 # Re-bless failing golden images (UPDATE_GOLDENS=force rewrites all); refused in CI
 bless:
-    UPDATE_GOLDENS=1 cargo test -p spherekit-cli --test golden
+    UPDATE_GOLDENS=1 cargo test -p spherekit-cli --test it golden::
 
 # Regenerate tests/golden/contact-sheet.png from the references
 contact-sheet:

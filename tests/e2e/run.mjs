@@ -227,7 +227,7 @@ test('every malformed scene of tests/robustness/bad is refused by the wasm API a
   const names = (await readdir(badDir)).filter((n) => n.endsWith('.json')).sort();
   assert.ok(names.length >= 40, `only ${names.length} bad scenes`);
   // The bytes as the page would receive them as text: invalid UTF-8 becomes U+FFFD and a BOM is
-  // kept (as String::from_utf8_lossy does in crates/spherekit-cli/tests/robustness.rs).
+  // kept (as String::from_utf8_lossy does in crates/spherekit-cli/tests/it/robustness.rs).
   // As there, the .txt is the CLI's message for a file it cannot read as UTF-8 text, so such a
   // scene must only be refused here.
   const cases = await Promise.all(names.map(async (name) => {

@@ -83,7 +83,9 @@ pub enum GoldenError {
 }
 
 fn bless_command(name: &str) -> String {
-    format!("UPDATE_GOLDENS={name} cargo test -p spherekit-cli --test golden (or `./run bless`)")
+    format!(
+        "UPDATE_GOLDENS={name} cargo test -p spherekit-cli --test it golden:: (or `./run bless`)"
+    )
 }
 
 impl fmt::Display for GoldenError {

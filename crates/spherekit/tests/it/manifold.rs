@@ -10,13 +10,12 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod support;
-
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{Ambient, Manifold, PointError, S2Point, SnPoint, UnitQuat};
-use support::{Rng, assert_close, assert_unit};
+
+use crate::support::{Rng, assert_close, assert_unit};
 
 #[test]
 fn constructors_normalise_and_reject_bad_input() {

@@ -11,8 +11,6 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod support;
-
 use core::f64::consts::PI;
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
@@ -20,7 +18,8 @@ use spherekit::{
     ArcBlend, CircleArc, CornerBlend, CornerBlendS3, Curve, Manifold, Side, SmoothingPolynomials,
     SplineError, UnitQuat, angular_velocity_acceleration,
 };
-use support::{Rng, check_continuity, check_derivatives};
+
+use crate::support::{Rng, check_continuity, check_derivatives};
 
 fn q(w: f64, x: f64, y: f64, z: f64) -> UnitQuat {
     UnitQuat::from_wxyz([w, x, y, z]).unwrap()

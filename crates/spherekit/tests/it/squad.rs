@@ -5,11 +5,10 @@
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 
-mod support;
-
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{Curve, Manifold, Side, SplineError, Squad, UnitQuat, continuity, unflip};
-use support::*;
+
+use crate::support::*;
 
 /// `q·v` for a pure quaternion `v`, as an ambient vector.
 fn qv(q: UnitQuat, v: DVec3) -> DVec4 {

@@ -7,10 +7,9 @@
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 
-mod support;
-
 use spherekit::{Ambient, Bezier, CatmullRom, Curve, Manifold, Squad, unflip};
-use support::*;
+
+use crate::support::*;
 
 fn check_finite_unit<C: Curve>(c: &C) {
     let [t0, t1] = c.domain();

@@ -6,13 +6,12 @@
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 
-mod support;
-
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     Ambient, CatmullRom, Curve, Manifold, S2Point, Side, SplineError, UnitQuat, continuity, unflip,
 };
-use support::*;
+
+use crate::support::*;
 
 fn qv(q: UnitQuat, v: DVec3) -> DVec4 {
     DVec4::from(DQuat::from_xyzw(v.x, v.y, v.z, 0.0) * q.as_dquat())

@@ -24,11 +24,7 @@ use std::process::{Command, Stdio};
 use serde_json::json;
 use spherekit_scene::{METHODS, Scene, Spheres};
 
-use arbtest::arbitrary as arb;
-#[path = "support/robust.rs"]
-mod robust;
-
-use robust::{Outcome, check_scene};
+use crate::robust::{Outcome, check_scene};
 
 fn corpus_dir(sub: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -11,13 +11,9 @@
     reason = "tests: a panic is the failure report"
 )]
 
-use arbtest::arbitrary as arb;
-#[path = "support/robust.rs"]
-mod robust;
-
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use robust::{Outcome, check_scene_capped, extreme_scene};
+use crate::robust::{Outcome, check_scene_capped, extreme_scene};
 
 /// Prints how many cases a property ran and how many built (visible with `--nocapture`).
 fn report(name: &str, cases: &AtomicUsize, built: &AtomicUsize) {

@@ -4,10 +4,9 @@
 //! Rotation conversions (Pobegailo 2019, chapters 3–4): standard identities, the
 //! book's golden values that are correct, and one negative test per corrected misprint.
 
-mod support;
-
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_8, PI, SQRT_2};
-use support::Rng;
+
+use crate::support::Rng;
 
 use spherekit::glam::{DMat3, DQuat, DVec3};
 use spherekit::{

@@ -10,7 +10,7 @@
     reason = "tests: a panic is the failure report"
 )]
 
-#[path = "../benches/data.rs"]
+#[path = "../../benches/data.rs"]
 mod data;
 
 use spherekit::glam::{DVec3, DVec4};

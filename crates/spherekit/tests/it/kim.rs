@@ -5,14 +5,13 @@
 
 #![allow(clippy::unwrap_used, reason = "tests: a panic is the failure report")]
 
-mod support;
-
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     BezierKim, BsplineKim, Curve, Manifold, Side, SplineError, UnitQuat,
     angular_velocity_acceleration,
 };
-use support::Rng;
+
+use crate::support::Rng;
 
 fn v4(q: UnitQuat) -> DVec4 {
     q.to_vector()

@@ -4,14 +4,13 @@
 //! Tests of the spherical Beta spline and its interpolation solvers (Yang et al. 2021, §3–5;
 //! `docs/derivations.md`).
 
-mod support;
-
 use spherekit::glam::{DVec3, DVec4};
 use spherekit::{
     Ambient, BetaParams, BetaSolver, BetaSpline, Curve, Manifold, S2Point, Side, SnPoint,
     SolveError, SplineError, UnitQuat,
 };
-use support::Rng;
+
+use crate::support::Rng;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers

@@ -5,13 +5,12 @@
 
 #![allow(clippy::unwrap_used, reason = "tests: a panic is the failure report")]
 
-mod support;
-
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
     BezierKim, Curve, GammaSpline, Gammas, LastEdge, Manifold, Side, SplineError, UnitQuat,
 };
-use support::Rng;
+
+use crate::support::Rng;
 
 fn q(wxyz: [f64; 4]) -> UnitQuat {
     UnitQuat::from_wxyz(wxyz).unwrap()

@@ -10,14 +10,13 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod support;
-
 use spherekit::glam::DVec3;
 use spherekit::{
     Curve, GeodesicSpline, Knots, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError,
     UnitQuat,
 };
-use support::{Rng, assert_close, assert_unit, check_derivatives_at, interior_parameters};
+
+use crate::support::{Rng, assert_close, assert_unit, check_derivatives_at, interior_parameters};
 
 fn chain(rng: &mut Rng, n: usize) -> Vec<S2Point> {
     let mut p = vec![rng.s2()];

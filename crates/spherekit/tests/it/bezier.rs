@@ -5,14 +5,13 @@
 
 #![allow(clippy::unwrap_used, reason = "tests unwrap known-valid fixtures")]
 
-mod support;
-
 use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, Bezier, Curve, GeodesicSpline, Jet, Manifold, S2Point, ScalarJet, SnPoint,
     SplineError, UnitQuat, cubic_jet, de_casteljau, de_casteljau_jet, slerp_jet,
 };
-use support::*;
+
+use crate::support::*;
 
 fn check_basic<P: Manifold>(ctrl: Vec<P>) {
     let n = ctrl.len() - 1;

@@ -11,8 +11,6 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod support;
-
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_8, PI};
 
 use spherekit::glam::{DMat3, DVec3};
@@ -20,7 +18,8 @@ use spherekit::{
     ArcBlend, CircleArc, CornerBlend, Curve, GroupJet, Manifold, S2Point, Side,
     SmoothingPolynomials, SplineError,
 };
-use support::{Rng, check_continuity, check_derivatives};
+
+use crate::support::{Rng, check_continuity, check_derivatives};
 
 fn p(x: f64, y: f64, z: f64) -> S2Point {
     S2Point::try_new(DVec3::new(x, y, z)).unwrap()

@@ -17,15 +17,14 @@
     reason = "tests unwrap known-valid fixtures; counts are far below 2⁵³"
 )]
 
-mod support;
-
 use spherekit::glam::{DQuat, DVec3};
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSpline, BsplineKim, CatmullRom, CornerBlend,
     CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
     Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad, UnitQuat,
 };
-use support::Rng;
+
+use crate::support::Rng;
 
 /// Keys per sequence.
 const KEYS: usize = 100_000;

@@ -15,14 +15,13 @@
     reason = "tests: a panic is the failure report"
 )]
 
-mod support;
-
 use spherekit::glam::{DMat3, DVec3, DVec4};
 use spherekit::{
     Ambient, CubicEnd, CubicSpline, Curve, Manifold, S2Point, Side, SnPoint, SplineError, UnitQuat,
     VecN, angular_velocity_acceleration_body, continuity, unflip,
 };
-use support::{Rng, check_derivatives, check_derivatives_at, interior_parameters};
+
+use crate::support::{self, Rng, check_derivatives, check_derivatives_at, interior_parameters};
 
 const KNOTS6: [f64; 6] = [0.0, 0.5, 2.0, 3.0, 5.0, 5.5];
 
@@ -186,7 +185,7 @@ fn floats(v: &serde_json::Value) -> Vec<f64> {
 /// 3.2e-11: scipy stops its iteration at a change of 1e-9). Run with `-- --nocapture` to print.
 #[test]
 fn scipy_agreement() {
-    let text = include_str!("data/rotation_spline_scipy.json");
+    let text = include_str!("../data/rotation_spline_scipy.json");
     let data: serde_json::Value = serde_json::from_str(text).unwrap();
     let (mut worst_angle, mut worst_rate, mut worst_acc) = (0.0_f64, 0.0_f64, 0.0_f64);
     for case in data["cases"].as_array().unwrap() {
