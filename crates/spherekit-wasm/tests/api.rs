@@ -114,8 +114,14 @@ fn sample_reports_body_frame_rates() {
             .sum::<f64>()
             .sqrt()
     };
-    let (a, b) = (&space["angular_velocity"][40], &body["angular_velocity"][40]);
-    assert!((norm(a) - norm(b)).abs() < 1e-12, "|ω| is the same in both frames");
+    let (a, b) = (
+        &space["angular_velocity"][40],
+        &body["angular_velocity"][40],
+    );
+    assert!(
+        (norm(a) - norm(b)).abs() < 1e-12,
+        "|ω| is the same in both frames"
+    );
     assert_ne!(a, b, "the components differ");
     assert!(
         message(sample(S3, true, Some("world".into())).unwrap_err()).starts_with("frame:"),

@@ -2,12 +2,11 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! The integration tests of `spherekit`, one module per subject, linked as one test binary
-//! (one link instead of one per file). `tests/batch_alloc.rs` stays a binary of its own: it
-//! has `harness = false` and a counting global allocator.
+//! (one link instead of one per file). The batch-evaluation and allocation checks of every
+//! method live with the registry, in `crates/spherekit-scene/tests/`.
 
 mod support;
 
-mod batch;
 mod beta_spline;
 mod bezier;
 mod catmull_rom;
