@@ -10,10 +10,14 @@ use spherekit_scene::{Built, BuiltCurve};
 
 use crate::support::cases;
 
-fn parameters([t0, t1]: [f64; 2]) -> Vec<f64> {
+fn parameters([t0, t1]: [f64; 2], joints: &[f64]) -> Vec<f64> {
     let mut ts: Vec<f64> = (0..=200)
         .map(|i| t0 + (t1 - t0) * f64::from(i) / 200.0)
         .collect();
+    // At and beside the joints.
+    for &t in joints {
+        ts.extend([t.next_down(), t, t.next_up()]);
+    }
     // Unsorted, repeated and outside the domain.
     ts.extend([
         t1,
