@@ -120,6 +120,63 @@ fn winding(coords: usize, n: usize) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// A seeded random walk of `n` unit points with `coords` coordinates, steps of 0.05–0.5 rad in
+/// random directions (the sequences on which the book's arc-blend knots used to overflow).
+fn random_walk(coords: usize, n: usize, seed: u64) -> Vec<Vec<f64>> {
+    let mut state = seed;
+    let mut uniform = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        #[expect(clippy::cast_precision_loss, reason = "53 random bits")]
+        let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+        u
+    };
+    let mut p = vec![0.0; coords];
+    p[0] = 1.0;
+    let mut out = Vec::with_capacity(n);
+    for _ in 0..n {
+        out.push(p.clone());
+        // A random tangent direction: a random vector minus its component along p.
+        let mut d: Vec<f64> = (0..coords).map(|_| uniform() - 0.5).collect();
+        let dot: f64 = d.iter().zip(&p).map(|(a, b)| a * b).sum();
+        d.iter_mut().zip(&p).for_each(|(a, b)| *a -= dot * b);
+        let len = d.iter().map(|a| a * a).sum::<f64>().sqrt();
+        let step = 0.05 + 0.45 * uniform();
+        let (s, c) = step.sin_cos();
+        p = p.iter().zip(&d).map(|(a, b)| c * a + s * b / len).collect();
+    }
+    out
+}
+
+/// Random walks of 100 000 keys on S² and S³ for every method whose cost is linear in the keys
+/// (the single-piece Bézier curves are left to `ten_thousand_keys`): built, sampled with
+/// derivatives, and the continuity report computed at every joint through the scene layer.
+#[test]
+fn hundred_thousand_key_random_walks() {
+    let mut failures = Vec::new();
+    for method in METHODS.iter().filter(|m| !m.single_piece) {
+        let spaces: &[(&str, usize)] = match method.spheres {
+            Spheres::All => &[("S2", 3), ("S3", 4)],
+            Spheres::S3 => &[("S3", 4)],
+        };
+        for &(space, coords) in spaces {
+            let scene = json!({
+                "space": space, "method": method.id, "points": random_walk(coords, 100_000, 7),
+                "samples": 101,
+            });
+            match check_scene(&scene.to_string(), None) {
+                Ok(Outcome::Ok) => {}
+                Ok(Outcome::Rejected(e)) => {
+                    failures.push(format!("{} {space}: rejected: {e}", method.id));
+                }
+                Err(e) => failures.push(format!("{} {space}: {e}", method.id)),
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// Very long sequences: 10 000 keys for every method and space. `bezier` is one curve of degree
 /// n − 1 evaluated by the de Casteljau triangle, O(n²) slerps per evaluation (7.4 s per jet at
 /// 10 000 keys in release), so it gets 300 keys here; `bezier-kim` (O(n²) flops, 21 ms per jet
