@@ -66,11 +66,13 @@ class RotationSpline:
 
     Beyond scipy:
 
-    - ``end="scipy"`` (default: the end rates are the end segments' mean rates), ``"natural"``
+    - ``end="scipy"`` (the default for open splines: the end rates are the end segments' mean
+      rates), ``"natural"``
       (zero angular acceleration at the ends) or ``"clamped"`` (the body-frame angular rates
       ``start_rate`` and ``end_rate`` at the first and last key);
     - ``closed=True``: a C2 loop through the keys; ``times`` then has one more entry than
-      ``rotations``, the time at which the spline is back at the first key.
+      ``rotations``, the time at which the spline is back at the first key (no ends: ``end``
+      must be left out or ``"natural"``).
 
     >>> import numpy as np
     >>> from spherekit import RotationSpline
@@ -85,7 +87,7 @@ class RotationSpline:
     True
     """
 
-    def __init__(self, times, rotations, *, end="scipy", closed=False, start_rate=None, end_rate=None):
+    def __init__(self, times, rotations, *, end=None, closed=False, start_rate=None, end_rate=None):
         q = _quats(rotations, "RotationSpline")
         if len(q) == 1:
             raise ValueError("`rotations` must contain at least 2 rotations.")
@@ -106,6 +108,8 @@ class RotationSpline:
             )
         if np.any(np.diff(times) <= 0):
             raise ValueError("Values in `times` must be in a strictly increasing order.")
+        if end is None:
+            end = "natural" if closed else "scipy"
         self._native = _spherekit._CubicRotations(
             times, q, end=end, closed=closed, start_rate=start_rate, end_rate=end_rate
         )
@@ -130,7 +134,7 @@ class Slerp:
 
     >>> from spherekit import Slerp
     >>> from scipy.spatial.transform import Rotation
-    >>> slerp = Slerp([0, 2], Rotation.from_euler("z", [0, 90], degrees=True))
+    >>> slerp = Slerp([0, 2], Rotation.from_euler("z", [[0], [90]], degrees=True))
     >>> round(float(slerp(1.0).as_euler("xyz", degrees=True)[2]), 9)
     45.0
     >>> slerp(3.0)

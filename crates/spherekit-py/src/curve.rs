@@ -86,9 +86,59 @@ impl Flat for SnPoint {
     }
 }
 
+/// Below this many parameters a batch is evaluated on the calling thread only.
+const PARALLEL_MIN: usize = 32_768;
+
+/// The threads a large batch is split over: `SPHEREKIT_THREADS` if set (1 turns the splitting
+/// off; read at every batch), else the available parallelism, at most 8.
+fn threads() -> usize {
+    static AVAILABLE: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    std::env::var("SPHEREKIT_THREADS")
+        .ok()
+        .and_then(|v| v.parse::<usize>().ok())
+        .unwrap_or_else(|| {
+            *AVAILABLE.get_or_init(|| {
+                std::thread::available_parallelism()
+                    .map_or(1, usize::from)
+                    .min(8)
+            })
+        })
+        .max(1)
+}
+
 /// Evaluates `what` at every parameter into rows (`width` numbers each). NaN parameters give
-/// rows of NaN (the library's curves are not evaluated at NaN).
+/// rows of NaN (the library's curves are not evaluated at NaN). Large batches are split into
+/// contiguous parts evaluated on scoped threads (see [`threads`]); the values are the same
+/// as on one thread, bit for bit.
 pub(crate) fn evaluate<P: Flat>(
+    curve: &(dyn Curve<Point = P> + Send + Sync),
+    ts: &[f64],
+    what: What,
+    width: usize,
+    scalar_first: bool,
+) -> Vec<f64> {
+    let parts = threads().min(ts.len() / (PARALLEL_MIN / 2)).max(1);
+    if parts == 1 {
+        return evaluate_serial(curve, ts, what, width, scalar_first);
+    }
+    let size = ts.len().div_ceil(parts);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = ts
+            .chunks(size)
+            .map(|part| {
+                scope.spawn(move || evaluate_serial(curve, part, what, width, scalar_first))
+            })
+            .collect();
+        let mut out = Vec::with_capacity(ts.len() * width);
+        for h in handles {
+            // A panic in a part is re-raised here (pyo3 turns it into a Python exception).
+            out.extend_from_slice(&h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
+        }
+        out
+    })
+}
+
+fn evaluate_serial<P: Flat>(
     curve: &(dyn Curve<Point = P> + Send + Sync),
     ts: &[f64],
     what: What,
@@ -98,6 +148,14 @@ pub(crate) fn evaluate<P: Flat>(
     let t0 = curve.domain()[0];
     let mut out = Vec::with_capacity(ts.len() * width);
     let mut clean = Vec::new();
+    let n = ts.len().min(CHUNK);
+    let mut points = Vec::new();
+    let mut jets: Vec<Jet<P>> = Vec::new();
+    if what == What::Point {
+        points = vec![curve.eval(t0); n];
+    } else {
+        jets = vec![curve.jet(t0); n];
+    }
     for chunk in ts.chunks(CHUNK) {
         let chunk = if chunk.iter().any(|t| t.is_nan()) {
             clean.clear();
@@ -107,15 +165,15 @@ pub(crate) fn evaluate<P: Flat>(
             chunk
         };
         if what == What::Point {
-            let mut ps = vec![curve.eval(t0); chunk.len()];
-            curve.eval_many(chunk, &mut ps);
-            for p in &ps {
+            let ps = &mut points[..chunk.len()];
+            curve.eval_many(chunk, ps);
+            for p in ps.iter() {
                 p.put_point(scalar_first, &mut out);
             }
         } else {
-            let mut jets: Vec<Jet<P>> = vec![curve.jet(t0); chunk.len()];
-            curve.jet_many(chunk, &mut jets);
-            put_jets(&jets, what, scalar_first, &mut out);
+            let js = &mut jets[..chunk.len()];
+            curve.jet_many(chunk, js);
+            put_jets(js, what, scalar_first, &mut out);
         }
     }
     for (k, t) in ts.iter().enumerate() {

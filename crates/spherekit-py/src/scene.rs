@@ -149,7 +149,8 @@ pub(crate) fn render_png(
     size: i64,
 ) -> PyResult<()> {
     let pixmap = render_pixels(py, scene, size)?;
-    let png = spherekit_cli::encode_png(&pixmap)
+    let png = pixmap
+        .encode_png()
         .map_err(|e| value_error(format!("cannot encode the PNG: {e}")))?;
     std::fs::write(&path, png).map_err(|e| {
         pyo3::exceptions::PyOSError::new_err(format!("cannot write {}: {e}", path.display()))
