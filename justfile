@@ -10,7 +10,7 @@ demo:
     cargo run --quiet --release -p spherekit-cli --bin spherekit -- sample examples/orientations.json --deriv
 
 # Everything CI runs, fast checks first
-test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e
+test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e test-python
 
 # Formatting
 fmt-check:
@@ -42,6 +42,14 @@ corpus:
 # Unit, integration, property and CLI tests, and doctests
 unit:
     cargo test --workspace --all-features --locked
+
+# The Python module: build it into .tools/pyvenv (pinned numpy, scipy, numpy-quaternion, pytest from PyPI) and run its pytest suite
+test-python:
+    bash scripts/setup-python.sh python -m pytest -q python/tests
+
+# Time the Python module against scipy in one run (see BENCHMARKS.md, section 7)
+bench-python:
+    bash scripts/setup-python.sh python scripts/bench_python.py
 
 # API docs, warnings are errors
 doc:
