@@ -714,6 +714,7 @@ impl Frames {
             }));
         }
         let mut e_end = vec![0.0; r];
+        let mut g = vec![0.0; r];
         for k in 0..count - 1 {
             let (x, e) = (&xs[k * r..(k + 1) * r], &es[k * r..(k + 1) * r]);
             let next = ((k + 1) % n) * r;
@@ -725,12 +726,14 @@ impl Frames {
             for a in 0..m {
                 let f = &data[(k * m + a) * r..(k * m + a + 1) * r];
                 let fe = dot(f, e);
-                let mut g: Vec<f64> = f.iter().zip(&e_end).map(|(fj, dj)| fj + fe * dj).collect();
+                for ((gj, fj), dj) in g.iter_mut().zip(f).zip(&e_end) {
+                    *gj = fj + fe * dj;
+                }
                 let gy = dot(&g, y);
                 for (gj, yj) in g.iter_mut().zip(y) {
                     *gj -= gy * yj;
                 }
-                data.extend(g);
+                data.extend_from_slice(&g);
             }
         }
         Self { r, data }
@@ -783,13 +786,28 @@ struct SegConst {
 
 impl SegConst {
     fn new(theta: f64, h: f64) -> Self {
+        if theta.abs() < 0.1 {
+            return Self {
+                theta,
+                h,
+                sinc: math::sinc(theta),
+                inv_sinc: math::inv_sinc(theta),
+                kappa: kappa(theta),
+                dsinc: sinc_deriv(theta),
+                c2: 2.0 / h,
+                c4: 4.0 / h,
+                c6: 6.0 * theta / (h * h),
+            };
+        }
+        // Above every series switch: one `sin_cos` for the four closed forms.
+        let (sn, cs) = math::sin_cos(theta);
         Self {
             theta,
             h,
-            sinc: math::sinc(theta),
-            inv_sinc: math::inv_sinc(theta),
-            kappa: kappa(theta),
-            dsinc: sinc_deriv(theta),
+            sinc: sn / theta,
+            inv_sinc: theta / sn,
+            kappa: (theta - sn * cs) / (theta * theta),
+            dsinc: (theta * cs - sn) / (theta * theta),
             c2: 2.0 / h,
             c4: 4.0 / h,
             c6: 6.0 * theta / (h * h),
@@ -1433,9 +1451,54 @@ fn mat_vecf<const M: usize>(a: &Bf<M>, x: &Vf<M>) -> Vf<M> {
     out
 }
 
-/// `a⁻¹`, as [`invert`] (the same elimination); `None` if singular.
+/// `a⁻¹` for the pivot blocks of the Jacobian: the adjugate over the determinant for
+/// `M ≤ 3` (branch-free, one division; the blocks are diagonally dominant, and a less accurate
+/// inverse would only slow Newton's convergence, never change the residual it stops at), the
+/// elimination of [`invert`] otherwise; `None` if singular.
 #[inline(always)]
 fn invertf<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
+    let mut out = [[0.0; M]; M];
+    match M {
+        1 => {
+            out[0][0] = 1.0 / a[0][0];
+            return (a[0][0] != 0.0 && out[0][0].is_finite()).then_some(out);
+        }
+        2 => {
+            let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+            let r = 1.0 / det;
+            out[0][0] = a[1][1] * r;
+            out[0][1] = -a[0][1] * r;
+            out[1][0] = -a[1][0] * r;
+            out[1][1] = a[0][0] * r;
+            return (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite()))
+                .then_some(out);
+        }
+        3 => {
+            let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+            let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+            let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+            let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+            let r = 1.0 / det;
+            out[0][0] = c00 * r;
+            out[1][0] = c01 * r;
+            out[2][0] = c02 * r;
+            out[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * r;
+            out[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * r;
+            out[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * r;
+            out[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * r;
+            out[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * r;
+            out[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * r;
+            return (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite()))
+                .then_some(out);
+        }
+        _ => {}
+    }
+    invert_gj(a)
+}
+
+/// `a⁻¹` by the elimination of [`invert`]; `None` if singular.
+#[inline(always)]
+fn invert_gj<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
     let mut w = *a;
     let mut out = [[0.0; M]; M];
     for (i, row) in out.iter_mut().enumerate() {
@@ -2026,8 +2089,17 @@ mod tests {
         mat_mul(Dynamic(3), &a, &inv, &mut id);
         // The fixed-size elimination is the same one.
         let rows = [[a[0], a[1], a[2]], [a[3], a[4], a[5]], [a[6], a[7], a[8]]];
-        let inv_f = invertf(&rows).expect("invertible");
-        assert_eq!(inv_f.concat(), inv.to_vec(), "invertf = invert");
+        let inv_f = invert_gj(&rows).expect("invertible");
+        assert_eq!(inv_f.concat(), inv.to_vec(), "invert_gj = invert");
+        let adj = invertf(&rows).expect("invertible");
+        for (x, y) in adj.concat().iter().zip(&inv) {
+            assert!((x - y).abs() < 1e-15, "adjugate {x} vs {y}");
+        }
+        assert!(
+            invertf(&[[1.0, 2.0], [2.0, 4.0]]).is_none(),
+            "singular 2 × 2"
+        );
+        assert!(invertf(&[[0.0]]).is_none(), "singular 1 × 1");
         for i in 0..3 {
             for j in 0..3 {
                 let e = if i == j { 1.0 } else { 0.0 };
