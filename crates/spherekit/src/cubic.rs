@@ -1690,13 +1690,18 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                 }
             }
             f[k] = fk;
-            let fnorm = normf(&fk);
-            if !fnorm.is_finite() {
+            // `worst = max(worst, |fₖ|/scale)`, with the square root and the division only for
+            // the rows that can raise it (the margin covers the rounding of the squares).
+            let fn2 = dotf(&fk, &fk);
+            if !fn2.is_finite() {
                 return f64::INFINITY;
             }
             if scale > 0.0 {
-                worst = worst.max(fnorm / scale);
-            } else if fnorm > 0.0 {
+                let bound = worst * scale;
+                if fn2 >= bound * bound * (1.0 - 1e-12) {
+                    worst = worst.max(fn2.sqrt() / scale);
+                }
+            } else if fn2 > 0.0 {
                 return f64::INFINITY;
             }
         }
