@@ -316,12 +316,8 @@ impl<P: Manifold> CubicSpline<P> {
 
         // Span coordinates of the keys, the directions and the clamped velocities.
         let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
-        let mut generators: Vec<P::Vector> = vectors.clone();
-        if let Some((s, e)) = &clamps {
-            generators.push(s.clone());
-            generators.push(e.clone());
-        }
-        let basis = span_basis(&generators);
+        let clamp_vectors = clamps.iter().flat_map(|(s, e)| [s, e]);
+        let basis = span_basis(vectors[0].dim(), vectors.iter().chain(clamp_vectors));
         let r = basis.len();
         let coords = |v: &P::Vector, out: &mut Vec<f64>| out.extend(basis.iter().map(|b| b.dot(v)));
         let mut xs = Vec::with_capacity(n * r);
@@ -333,7 +329,9 @@ impl<P: Manifold> CubicSpline<P> {
             coords(e, &mut es);
         }
         let m = r - 1;
-        let frames = Frames::new(&xs, &es, &thetas, r, closed);
+        // sin θ and cos θ of each segment, for the frame transport and the solver's scalars.
+        let sin_cos: Vec<(f64, f64)> = thetas.iter().map(|&t| math::sin_cos(t)).collect();
+        let frames = Frames::new(&xs, &es, &sin_cos, r, closed);
         let mut geo = Geometry {
             n,
             m,
@@ -344,7 +342,8 @@ impl<P: Manifold> CubicSpline<P> {
             fixed: None,
         };
         for i in 0..nseg {
-            geo.seg.push(SegConst::new(thetas[i], knots.width(i)));
+            geo.seg
+                .push(SegConst::new(thetas[i], knots.width(i), sin_cos[i]));
             for a in 0..m {
                 geo.ehat
                     .push(dot(frames.vector(i, a), &es[i * r..(i + 1) * r]));
@@ -645,8 +644,7 @@ fn kappa(x: f64) -> f64 {
 
 /// An orthonormal basis of the span of `vectors` (modified Gram–Schmidt, twice, on the
 /// normalised vectors; zero vectors are skipped).
-fn span_basis<V: Ambient>(vectors: &[V]) -> Vec<V> {
-    let dim = vectors[0].dim();
+fn span_basis<'a, V: Ambient + 'a>(dim: usize, vectors: impl IntoIterator<Item = &'a V>) -> Vec<V> {
     let mut basis: Vec<V> = Vec::with_capacity(dim);
     for p in vectors {
         if basis.len() == dim {
@@ -695,7 +693,7 @@ struct Frames {
 }
 
 impl Frames {
-    fn new(xs: &[f64], es: &[f64], thetas: &[f64], r: usize, closed: bool) -> Self {
+    fn new(xs: &[f64], es: &[f64], sin_cos: &[(f64, f64)], r: usize, closed: bool) -> Self {
         let m = r - 1;
         let n = xs.len() / r;
         let count = n + usize::from(closed);
@@ -719,7 +717,7 @@ impl Frames {
             let (x, e) = (&xs[k * r..(k + 1) * r], &es[k * r..(k + 1) * r]);
             let next = ((k + 1) % n) * r;
             let y = &xs[next..next + r];
-            let (sn, cs) = math::sin_cos(thetas[k]);
+            let (sn, cs) = sin_cos[k];
             for j in 0..r {
                 e_end[j] = -sn * x[j] + cs * e[j] - e[j];
             }
@@ -785,7 +783,8 @@ struct SegConst {
 }
 
 impl SegConst {
-    fn new(theta: f64, h: f64) -> Self {
+    /// The scalars of a segment of angle `theta` (`(sin θ, cos θ)` given) and width `h`.
+    fn new(theta: f64, h: f64, (sn, cs): (f64, f64)) -> Self {
         if theta.abs() < 0.1 {
             return Self {
                 theta,
@@ -799,8 +798,7 @@ impl SegConst {
                 c6: 6.0 * theta / (h * h),
             };
         }
-        // Above every series switch: one `sin_cos` for the four closed forms.
-        let (sn, cs) = math::sin_cos(theta);
+        // Above every series switch: the closed forms from the one `sin_cos`.
         Self {
             theta,
             h,
