@@ -1558,6 +1558,10 @@ struct FixedSolver<'g, const M: usize> {
     schur_inv: Bf<M>,
 }
 
+#[allow(
+    clippy::needless_range_loop,
+    reason = "element loops over the fixed-size blocks, indexed like the formulas"
+)]
 impl<'g, const M: usize> FixedSolver<'g, M> {
     fn new(g: &'g Geometry) -> Self {
         let arr = |s: &[f64]| -> Vf<M> { core::array::from_fn(|a| s[a]) };
