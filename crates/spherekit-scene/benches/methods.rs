@@ -35,7 +35,8 @@ fn methods(c: &mut Criterion) {
                 continue;
             }
             let n = if m.single_piece { 4 } else { 20 };
-            let scene = json!({ "space": space, "method": m.id, "points": cases::points(space, n) });
+            let scene =
+                json!({ "space": space, "method": m.id, "points": cases::points(space, n) });
             let Ok(scene) = Scene::from_json(&scene.to_string()) else {
                 continue;
             };
@@ -47,9 +48,10 @@ fn methods(c: &mut Criterion) {
             let ts: Vec<f64> = (0..10_000)
                 .map(|i| t0 + (t1 - t0) * f64::from(i) / 9_999.0)
                 .collect();
-            c.bench_function(&format!("{} {space} jet_many, 10 000 parameters", m.id), |b| {
-                b.iter(|| jets(black_box(&curves[0]), &ts))
-            });
+            c.bench_function(
+                &format!("{} {space} jet_many, 10 000 parameters", m.id),
+                |b| b.iter(|| jets(black_box(&curves[0]), &ts)),
+            );
         }
     }
 }
