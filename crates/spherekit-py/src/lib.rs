@@ -4,10 +4,10 @@
 //! `spherekit._spherekit`, the native half of the `spherekit` Python package (`python/`).
 //!
 //! Thin glue: numpy arrays in, numpy arrays out, every curve built and evaluated by the Rust
-//! crates. [`Curve`](curve::PyCurve) goes through the scene format and its method registry, so
+//! crates. `Curve` (module `curve`) goes through the scene format and its method registry, so
 //! every registered method, parameter and error message is the CLI's; the scipy drop-ins
 //! (`RotationSpline`, `Slerp` in `python/spherekit/_scipy.py`) use the core's `CubicSpline`
-//! and `GeodesicSpline` directly ([`rotation`]). Batches are evaluated with `eval_many` /
+//! and `GeodesicSpline` directly (module `rotation`). Batches are evaluated with `eval_many` /
 //! `jet_many` with the interpreter lock released; bad input is a `ValueError` carrying the
 //! one-line message of the CLI, never a panic.
 

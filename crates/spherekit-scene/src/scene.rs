@@ -508,7 +508,7 @@ impl Scene {
     /// [`sample_json`](Self::sample_json) with every option; `continuity` adds
     /// `continuity: [{ "t", "c0", "c1", "c2", "g1" }, …]`, the jumps of the point, of the first
     /// and second derivatives and of the unit tangent at each interior joint (see
-    /// [`continuity`](crate::continuity)).
+    /// [`spherekit::continuity`]).
     #[must_use]
     pub fn sample_json_with(&self, curves: &[BuiltCurve], options: SampleOptions) -> Value {
         let one = |spec: &CurveSpec, curve: &BuiltCurve| {
