@@ -86,7 +86,7 @@ fn bad_input_gives_the_cli_message() {
         "points[1] has zero length and cannot be normalised"
     );
     assert!(
-        message(sample("{", false).unwrap_err()).starts_with("invalid scene JSON: "),
+        message(sample("{", false, None).unwrap_err()).starts_with("invalid scene JSON: "),
         "JSON error"
     );
     assert!(
