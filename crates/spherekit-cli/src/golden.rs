@@ -380,7 +380,12 @@ pub fn contact_sheet(columns: u32, thumb: u32) -> Result<Pixmap, GoldenError> {
     let count = u32::try_from(images.len()).unwrap_or(u32::MAX).max(1);
     let rows = count.div_ceil(columns);
     let gap = 6;
-    let cell_h = thumb * 5 / 4;
+    // As tall as the tallest thumbnail (figures with plots and legends are taller than wide).
+    let cell_h = images
+        .iter()
+        .map(|img| (u64::from(img.height()) * u64::from(thumb)).div_ceil(u64::from(img.width().max(1))))
+        .max()
+        .map_or(thumb, |h| u32::try_from(h).unwrap_or(thumb));
     let mut sheet = Pixmap::new(columns * (thumb + gap) + gap, rows * (cell_h + gap) + gap)
         .ok_or_else(|| GoldenError::Io("contact sheet too large".into()))?;
     sheet.fill(Color::WHITE);
