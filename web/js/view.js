@@ -4,10 +4,10 @@ import * as sk from '../pkg/spherekit_wasm.js';
 import { drawBodies } from '../draw.js';
 import { $, state, fixedSize, showError } from './state.js';
 
-/** Whether the scene shows a speed plot under the sphere (the renderer's default on S³). */
+/** Whether the scene shows a plot under the sphere (speed, or speed and omega; the renderer's default on S³). */
 export function hasPlot() {
   const view = JSON.parse(state.pg.scene_json()).view ?? {};
-  return view.plot ? view.plot === 'speed' : state.pg.space() === 'S3';
+  return view.plot ? view.plot !== 'none' : state.pg.space() === 'S3';
 }
 
 function fit() {
