@@ -375,8 +375,7 @@ pub fn svg_names() -> Result<Vec<String>, GoldenError> {
         .filter_map(Result::ok)
         .map(|e| e.path())
         .filter(|p| {
-            p.extension().is_some_and(|x| x == "svg")
-                && !p.to_string_lossy().ends_with(".new.svg")
+            p.extension().is_some_and(|x| x == "svg") && !p.to_string_lossy().ends_with(".new.svg")
         })
         .map(|p| stem(&p))
         .collect();
@@ -453,7 +452,9 @@ pub fn contact_sheet(columns: u32, thumb: u32) -> Result<Pixmap, GoldenError> {
     // As tall as the tallest thumbnail (figures with plots and legends are taller than wide).
     let cell_h = images
         .iter()
-        .map(|img| (u64::from(img.height()) * u64::from(thumb)).div_ceil(u64::from(img.width().max(1))))
+        .map(|img| {
+            (u64::from(img.height()) * u64::from(thumb)).div_ceil(u64::from(img.width().max(1)))
+        })
         .max()
         .map_or(thumb, |h| u32::try_from(h).unwrap_or(thumb));
     let mut sheet = Pixmap::new(columns * (thumb + gap) + gap, rows * (cell_h + gap) + gap)

@@ -249,8 +249,7 @@ fn render(args: &[String]) -> Result<(), Failure> {
     let scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
     let bytes = match format {
         Format::Png => {
-            let pixmap =
-                spherekit_render::render(&scene, size).map_err(|e| bad(e.to_string()))?;
+            let pixmap = spherekit_render::render(&scene, size).map_err(|e| bad(e.to_string()))?;
             spherekit_cli::encode_png(&pixmap).map_err(|e| Failure {
                 status: 1,
                 message: format!("cannot encode the PNG: {e}"),

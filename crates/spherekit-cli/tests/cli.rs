@@ -558,7 +558,11 @@ fn render_writes_svg_with_every_legend_entry() {
     let out = dir.join("figure.svg");
     let path = out.to_str().unwrap();
     let ok = spherekit(&["render", "-", "-o", path, "--size", "300"], S3_TWO_CURVES);
-    assert!(ok.status.success(), "{}", String::from_utf8_lossy(&ok.stderr));
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
     let text = std::fs::read_to_string(&out).unwrap();
     let doc = roxmltree::Document::parse(&text).expect("well-formed XML");
     let root = doc.root_element();
@@ -593,10 +597,23 @@ fn render_writes_svg_with_every_legend_entry() {
     // --format agrees with the extension, or names a file without one.
     let plain = dir.join("figure");
     let ok = spherekit(
-        &["render", "-", "-o", plain.to_str().unwrap(), "--format", "svg", "--size", "64"],
+        &[
+            "render",
+            "-",
+            "-o",
+            plain.to_str().unwrap(),
+            "--format",
+            "svg",
+            "--size",
+            "64",
+        ],
         S2_SCENE,
     );
-    assert!(ok.status.success(), "{}", String::from_utf8_lossy(&ok.stderr));
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
     assert!(std::fs::read_to_string(&plain).unwrap().contains("<svg"));
     std::fs::remove_dir_all(dir).unwrap();
 }
@@ -606,10 +623,22 @@ fn render_refuses_extensions_it_cannot_write() {
     let dir = std::env::temp_dir().join(format!("spherekit-ext-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     for (name, extra, expected) in [
-        ("figure.jpg", &[][..], "cannot write .jpg files (render writes .png and .svg)"),
+        (
+            "figure.jpg",
+            &[][..],
+            "cannot write .jpg files (render writes .png and .svg)",
+        ),
         ("figure.pdf", &[][..], "cannot write .pdf files"),
-        ("figure.png", &["--format", "svg"][..], "does not match --format svg"),
-        ("figure.svg", &["--format", "gif"][..], "--format: \"gif\" is not a format"),
+        (
+            "figure.png",
+            &["--format", "svg"][..],
+            "does not match --format svg",
+        ),
+        (
+            "figure.svg",
+            &["--format", "gif"][..],
+            "--format: \"gif\" is not a format",
+        ),
     ] {
         let out = dir.join(name);
         let mut args = vec!["render", "-", "-o", out.to_str().unwrap()];
@@ -618,7 +647,10 @@ fn render_refuses_extensions_it_cannot_write() {
         assert_eq!(bad.status.code(), Some(2), "{name}");
         let line = String::from_utf8(bad.stderr).unwrap();
         assert_eq!(line.lines().count(), 1, "{line}");
-        assert!(line.contains(expected), "got `{line}`, expected `{expected}`");
+        assert!(
+            line.contains(expected),
+            "got `{line}`, expected `{expected}`"
+        );
         assert!(!out.exists(), "nothing is written under {name}");
     }
     std::fs::remove_dir_all(dir).unwrap();

@@ -123,7 +123,11 @@ pub(crate) fn draw(surface: &mut dyn Surface, entries: &[Entry], top: f32, size:
             Swatch::Line(color, dash, alpha) => {
                 let pen = Pen {
                     width: if dash.is_some() { 1.9 } else { 2.4 } * scale,
-                    cap: if dash.is_some() { Cap::Butt } else { Cap::Round },
+                    cap: if dash.is_some() {
+                        Cap::Butt
+                    } else {
+                        Cap::Round
+                    },
                     dash: dash.map(|d| d.map(|v| v * scale)),
                 };
                 let inset = if dash.is_some() { 0.0 } else { 1.2 * scale };

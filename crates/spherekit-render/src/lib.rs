@@ -132,8 +132,8 @@ pub fn render_built(
 ) -> Result<Pixmap, RenderError> {
     let figure = Figure::new(scene, curves, size)?;
     let frames: Vec<Rect> = figure.panels.iter().map(|(r, _)| *r).collect();
-    let mut pixmap = backdrop(size, figure.height, figure.axes, &frames)
-        .ok_or(RenderError::Size(size))?;
+    let mut pixmap =
+        backdrop(size, figure.height, figure.axes, &frames).ok_or(RenderError::Size(size))?;
     Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
         let mut raster = Raster {
             pixmap: &mut pixmap,
@@ -233,7 +233,8 @@ impl Figure {
                     draw_rotations(&mut canvas, b, color, single, &view);
                     // |ω| = 2|q′| (the half-angle factor); ω in the space frame.
                     sample(&*b.curve, size, normalized, &|j| {
-                        let w = angular_velocity_acceleration(j.point, j.velocity, j.acceleration).0;
+                        let w =
+                            angular_velocity_acceleration(j.point, j.velocity, j.acceleration).0;
                         [2.0 * j.velocity.length(), w.x, w.y, w.z]
                     })
                 }
@@ -269,10 +270,12 @@ impl Figure {
         let time = if normalized {
             [0.0, 1.0]
         } else {
-            curves.iter().fold([f64::INFINITY, f64::NEG_INFINITY], |[a, b], c| {
-                let [t0, t1] = c.domain();
-                [a.min(t0), b.max(t1)]
-            })
+            curves
+                .iter()
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[a, b], c| {
+                    let [t0, t1] = c.domain();
+                    [a.min(t0), b.max(t1)]
+                })
         };
         let strip = strip_height(size);
         let panels: Vec<(Rect, plot::Panel)> = panels_content
@@ -316,7 +319,13 @@ impl Figure {
         for (area, panel) in &self.panels {
             plot::draw(surface, *area, self.scale, panel, self.time);
         }
-        legend::draw(surface, &self.legend, self.legend_top, self.size, self.scale);
+        legend::draw(
+            surface,
+            &self.legend,
+            self.legend_top,
+            self.size,
+            self.scale,
+        );
         if let Some(title) = &self.title {
             #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
             let s = self.size as f32;
@@ -382,7 +391,9 @@ fn legend_entries(
     let s3 = scene.space == Space::S3;
     let name = |i: usize| {
         let spec = &scene.curves[i];
-        spec.label.clone().unwrap_or_else(|| spec.method.id.to_owned())
+        spec.label
+            .clone()
+            .unwrap_or_else(|| spec.method.id.to_owned())
     };
     let axis = ["x", "y", "z"];
     let mut out = Vec::new();

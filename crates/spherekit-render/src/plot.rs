@@ -116,7 +116,10 @@ fn fitting_ticks(lo: f64, hi: f64, length: f64, px: f32, gap: f32) -> (Vec<f64>,
 /// A tick number with `decimals` decimals and a true minus sign.
 pub(crate) fn format_number(v: f64, decimals: usize) -> String {
     let s = format!("{v:.decimals$}");
-    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+    if s.trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
         return s.trim_start_matches('-').to_owned();
     }
     s.replace('-', "−")
@@ -200,14 +203,7 @@ pub(crate) fn draw(
     for (v, label) in vticks.iter().zip(&vlabels) {
         let (_, y) = map(t0, *v);
         axis.push([Point::from_xy(x0 - 3.0 * scale, y), Point::from_xy(x0, y)]);
-        surface.text(
-            x0 - 4.0 * scale,
-            y + 0.5 * cap,
-            label,
-            px,
-            INK,
-            Anchor::End,
-        );
+        surface.text(x0 - 4.0 * scale, y + 0.5 * cap, label, px, INK, Anchor::End);
     }
     // The time axis: the zero line (the bottom for speeds), ticks and numbers.
     let (_, yz) = map(t0, 0.0);
@@ -222,14 +218,7 @@ pub(crate) fn draw(
     for &t in &tticks {
         let (x, _) = map(t, 0.0);
         axis.push([Point::from_xy(x, y0), Point::from_xy(x, y0 + 3.0 * scale)]);
-        surface.text(
-            x,
-            numbers,
-            &format_number(t, tdec),
-            px,
-            INK,
-            Anchor::Middle,
-        );
+        surface.text(x, numbers, &format_number(t, tdec), px, INK, Anchor::Middle);
     }
     for a in &axis {
         surface.polyline(a, thin);

@@ -77,8 +77,7 @@ impl Surface for Raster<'_> {
         for (c, col, quarter) in text::layout(s, px, x0) {
             let g = text::bitmap(c, px, quarter);
             for j in 0..g.height {
-                #[expect(clippy::cast_possible_wrap, reason = "small glyphs")]
-                let y = baseline + g.top + j as i32;
+                let y = baseline + g.top + i32::try_from(j).unwrap_or(i32::MAX / 2);
                 let Ok(y) = usize::try_from(y) else { continue };
                 if y >= height {
                     continue;
@@ -88,8 +87,7 @@ impl Surface for Raster<'_> {
                     if level == 0 {
                         continue;
                     }
-                    #[expect(clippy::cast_possible_wrap, reason = "small glyphs")]
-                    let x = col + g.left + i as i32;
+                    let x = col + g.left + i32::try_from(i).unwrap_or(i32::MAX / 2);
                     let Ok(x) = usize::try_from(x) else { continue };
                     if x >= width {
                         continue;
@@ -230,12 +228,7 @@ impl Surface for Svg {
                 let _ = write!(self.out, " stroke-opacity=\"{}\"", Num(alpha));
             }
             if let Some([on, off]) = pen.dash {
-                let _ = write!(
-                    self.out,
-                    " stroke-dasharray=\"{} {}\"",
-                    Num(on),
-                    Num(off)
-                );
+                let _ = write!(self.out, " stroke-dasharray=\"{} {}\"", Num(on), Num(off));
             }
             self.out.push_str("/>\n");
             i = j;

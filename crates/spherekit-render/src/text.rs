@@ -27,10 +27,6 @@ fn u16_at(b: &[u8], i: usize) -> u16 {
     u16::from_le_bytes([b[i], b[i + 1]])
 }
 
-fn i16_at(b: &[u8], i: usize) -> i16 {
-    i16::from_le_bytes([b[i], b[i + 1]])
-}
-
 fn u32_at(b: &[u8], i: usize) -> u32 {
     u32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]])
 }
@@ -43,7 +39,7 @@ fn units_per_em() -> f32 {
 /// The height of a capital letter as a fraction of the em (DejaVu Sans: 1493 / 2048).
 pub(crate) const CAP_HEIGHT: f32 = 0.729;
 
-/// A glyph of the subset: its advance (font units) and its outline commands.
+/// A glyph of the subset: its advance (font units) and its encoded outline.
 struct Glyph {
     advance: u16,
     commands: &'static [u8],
@@ -51,12 +47,10 @@ struct Glyph {
 
 /// The glyph for `c`, or for `?` when the subset does not have it.
 fn glyph(c: char) -> Glyph {
-    lookup(c)
-        .or_else(|| lookup('?'))
-        .unwrap_or(Glyph {
-            advance: 0,
-            commands: &[],
-        })
+    lookup(c).or_else(|| lookup('?')).unwrap_or(Glyph {
+        advance: 0,
+        commands: &[],
+    })
 }
 
 fn lookup(c: char) -> Option<Glyph> {
@@ -112,44 +106,70 @@ pub(crate) struct Bitmap {
     pub(crate) coverage: Vec<u8>,
 }
 
+/// The font units a stored coordinate counts (see `scripts/font_subset.py`).
+const QUANTUM: f32 = 2.0;
+
+/// Reads an unsigned LEB128 number at `*i`.
+fn varint(b: &[u8], i: &mut usize) -> u32 {
+    let (mut v, mut shift) = (0_u32, 0);
+    while let Some(&byte) = b.get(*i) {
+        *i += 1;
+        v |= u32::from(byte & 0x7f) << shift;
+        shift += 7;
+        if byte < 0x80 || shift > 28 {
+            break;
+        }
+    }
+    v
+}
+
+/// A zigzag-coded difference.
+fn unzigzag(z: u32) -> i32 {
+    #[expect(clippy::cast_possible_wrap, reason = "zigzag decoding")]
+    let v = (z >> 1) as i32 ^ -((z & 1) as i32);
+    v
+}
+
 /// The outline of `c` at `px` pixels per em in pixel coordinates (y down), the origin at
 /// `(dx, 0)`, as closed polylines.
 fn outline(c: char, px: f32, dx: f32) -> Vec<Vec<(f32, f32)>> {
-    let g = glyph(c);
-    let k = px / units_per_em();
-    let mut contours: Vec<Vec<(f32, f32)>> = Vec::new();
+    let b = glyph(c).commands;
+    let k = QUANTUM * px / units_per_em();
     let mut i = 0;
-    let b = g.commands;
-    let point = |i: usize| {
-        (
-            dx + f32::from(i16_at(b, i)) * k,
-            -f32::from(i16_at(b, i + 2)) * k,
-        )
+    let mut last = [0_i32; 2];
+    // The next point; with `flagged`, also whether the piece it starts is a quadratic.
+    let mut point = |i: &mut usize, flagged: bool| {
+        let zx = varint(b, i);
+        let (zx, quad) = if flagged {
+            (zx >> 1, zx & 1 == 1)
+        } else {
+            (zx, false)
+        };
+        last[0] += unzigzag(zx);
+        last[1] += unzigzag(varint(b, i));
+        #[expect(clippy::cast_precision_loss, reason = "small font coordinates")]
+        let p = (dx + last[0] as f32 * k, -(last[1] as f32) * k);
+        (p, quad)
     };
-    while i < b.len() {
-        match b[i] {
-            0 => {
-                contours.push(vec![point(i + 1)]);
-                i += 5;
+    let contours = varint(b, &mut i);
+    let mut out = Vec::new();
+    for _ in 0..contours {
+        let pieces = varint(b, &mut i);
+        let (start, _) = point(&mut i, false);
+        let mut contour = vec![start];
+        for _ in 0..pieces {
+            let (p, quad) = point(&mut i, true);
+            if quad {
+                let (end, _) = point(&mut i, false);
+                let p0 = *contour.last().unwrap_or(&start);
+                flatten_quad(&mut contour, p0, p, end);
+            } else {
+                contour.push(p);
             }
-            1 => {
-                if let Some(c) = contours.last_mut() {
-                    c.push(point(i + 1));
-                }
-                i += 5;
-            }
-            2 => {
-                let (p1, p2) = (point(i + 1), point(i + 5));
-                if let Some(c) = contours.last_mut() {
-                    let p0 = *c.last().unwrap_or(&p1);
-                    flatten_quad(c, p0, p1, p2);
-                }
-                i += 9;
-            }
-            _ => i += 1,
         }
+        out.push(contour);
     }
-    contours
+    out
 }
 
 /// Appends the quadratic from `p0` through control `p1` to `p2` as lines (enough that they
@@ -263,7 +283,6 @@ fn line(acc: &mut [f32], stride: usize, h: usize, a: (f32, f32), b: (f32, f32)) 
     #[expect(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,
-        clippy::cast_precision_loss,
         reason = "inside the bitmap"
     )]
     let (ystart, yend) = (
@@ -377,7 +396,10 @@ mod tests {
         let area: f32 = b.coverage.iter().map(|&c| f32::from(c) / 16.0).sum();
         let exact = 184.0 * 1556.0 / 64.0;
         assert!((area - exact).abs() < 0.02 * exact, "{area} vs {exact}");
-        assert!(b.coverage.iter().all(|&c| c <= 16), "coverage in sixteenths");
+        assert!(
+            b.coverage.iter().all(|&c| c <= 16),
+            "coverage in sixteenths"
+        );
     }
 
     #[test]

@@ -223,7 +223,9 @@ impl View {
                     .ok_or_else(|| {
                         bad(
                             "title",
-                            format!("must be a string of 1 to {MAX_TITLE_CHARS} characters on one line"),
+                            format!(
+                                "must be a string of 1 to {MAX_TITLE_CHARS} characters on one line"
+                            ),
                         )
                     })?;
                 Some(t.to_owned())
@@ -287,5 +289,98 @@ impl View {
             legend,
             title,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Scene;
+
+    fn view(json: &str, space: Space, curves: usize) -> Result<View, String> {
+        let v: Value = serde_json::from_str(json).expect("JSON");
+        View::from_json(Some(&v), space, curves).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn figure_options_default_by_the_picture() {
+        let one_s2 = view("{}", Space::S2, 1).expect("view");
+        assert!(!one_s2.legend, "one S2 curve: no legend");
+        assert_eq!(one_s2.plot_time, PlotTime::Shared);
+        assert_eq!(one_s2.title, None);
+        assert!(
+            view("{}", Space::S2, 2).expect("view").legend,
+            "several curves"
+        );
+        assert!(
+            view("{}", Space::S3, 1).expect("view").legend,
+            "S3 axis colours"
+        );
+        let v = view(
+            r#"{"legend": false, "title": "A", "plot": "omega", "plot_time": "normalized"}"#,
+            Space::S3,
+            3,
+        )
+        .expect("view");
+        assert!(!v.legend);
+        assert_eq!(v.title.as_deref(), Some("A"));
+        assert_eq!((v.plot, v.plot_time), (Plot::Omega, PlotTime::Normalized));
+    }
+
+    #[test]
+    fn bad_figure_options_name_the_field() {
+        let long = format!(r#"{{"title": "{}"}}"#, "x".repeat(MAX_TITLE_CHARS + 1));
+        for (json, space, expected) in [
+            (
+                r#"{"legend": 1}"#,
+                Space::S2,
+                "view.legend: must be true or false",
+            ),
+            (
+                r#"{"title": ""}"#,
+                Space::S2,
+                "view.title: must be a string of 1 to 120",
+            ),
+            (long.as_str(), Space::S2, "view.title: must be a string"),
+            (r#"{"title": "a\nb"}"#, Space::S2, "on one line"),
+            (
+                r#"{"plot_time": "own"}"#,
+                Space::S2,
+                "view.plot_time: must be",
+            ),
+            (r#"{"plot": "omega"}"#, Space::Sn(1), "view.plot: \"omega\""),
+            (
+                r#"{"plot": "phase"}"#,
+                Space::S2,
+                "view.plot: must be \"speed\", \"omega\" or \"none\"",
+            ),
+            (
+                r#"{"subtitle": "x"}"#,
+                Space::S2,
+                "view.subtitle: unknown view option",
+            ),
+        ] {
+            let e = view(json, space, 1).expect_err(json);
+            assert!(e.contains(expected), "{json}: {e}");
+        }
+    }
+
+    #[test]
+    fn curve_labels_are_checked_and_kept() {
+        let scene = Scene::from_json(
+            r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]],"label":"arc"}]}"#,
+        )
+        .expect("scene");
+        assert_eq!(scene.curves[0].label.as_deref(), Some("arc"));
+        for (label, expected) in [
+            (r#""""#, "curves[0].label: must be 1 to 60 characters"),
+            ("3", "label"),
+        ] {
+            let text = format!(
+                r#"{{"space":"S2","curves":[{{"method":"geodesic","points":[[1,0,0],[0,1,0]],"label":{label}}}]}}"#
+            );
+            let e = Scene::from_json(&text).expect_err(label).to_string();
+            assert!(e.contains(expected), "{label}: {e}");
+        }
     }
 }
