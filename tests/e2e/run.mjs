@@ -450,6 +450,41 @@ test('screenshots of the playground', async () => {
   await page.close();
 });
 
+test('Chromium parses and draws every SVG golden (spherekit render -o x.svg)', async () => {
+  const svgDir = path.join(goldenDir, 'svg');
+  const names = (await readdir(svgDir)).filter((n) => n.endsWith('.svg') && !n.endsWith('.new.svg')).sort();
+  assert.ok(names.length > 0, 'SVG goldens exist');
+  const page = await newPage();
+  await page.goto(`${origin}/index.html`);
+  for (const name of names) {
+    const text = await readFile(path.join(svgDir, name), 'utf8');
+    const result = await page.evaluate(async (svg) => {
+      const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
+      const error = doc.querySelector('parsererror')?.textContent ?? null;
+      const texts = [...doc.querySelectorAll('text')].map((t) => t.textContent);
+      const img = new Image();
+      img.src = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
+      await img.decode();
+      // Draw it: some pixels must be neither white nor transparent.
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      let inked = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200)) inked++;
+      return { error, texts: texts.length, width: img.naturalWidth, height: img.naturalHeight, inked };
+    }, text);
+    assert.equal(result.error, null, `${name} parses as SVG`);
+    assert.equal(result.width, GOLDEN_SIZE, `${name} width`);
+    assert.ok(result.texts >= 4, `${name} has its legend (and axes) as <text>`);
+    assert.ok(result.inked > 1000, `${name} draws something (${result.inked} inked pixels)`);
+  }
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('the playground loads nothing from other origins', () => {
   assert.deepEqual(externalRequests, []);
 });

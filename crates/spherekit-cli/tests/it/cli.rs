@@ -544,3 +544,114 @@ fn render_writes_a_png_and_nothing_for_a_bad_scene() {
     assert_eq!(missing.status.code(), Some(2));
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+/// A scene with two S³ curves: the legend names both, the traced axis and every kind of mark.
+const S3_TWO_CURVES: &str = r#"{"space":"S3","curves":[
+    {"method":"squad","points":[[1,0,0,0],[0.9239,0,0,0.3827],[0.7071,0.5,0.5,0],[0.5,-0.5,0.5,0.5]],"knots":[0,1,2.5,5.5],"label":"squad & <friends>"},
+    {"method":"bezier","points":[[1,0,0,0],[0.9239,0,0,0.3827],[0.7071,0.5,0.5,0],[0.5,-0.5,0.5,0.5]]}],
+    "view":{"title":"two curves","plot":"omega"}}"#;
+
+#[test]
+fn render_writes_svg_with_every_legend_entry() {
+    let dir = std::env::temp_dir().join(format!("spherekit-svg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("figure.svg");
+    let path = out.to_str().unwrap();
+    let ok = spherekit(&["render", "-", "-o", path, "--size", "300"], S3_TWO_CURVES);
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    let text = std::fs::read_to_string(&out).unwrap();
+    let doc = roxmltree::Document::parse(&text).expect("well-formed XML");
+    let root = doc.root_element();
+    assert_eq!(root.tag_name().name(), "svg");
+    assert_eq!(root.attribute("width"), Some("300"));
+    let texts: Vec<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .collect();
+    for entry in [
+        "two curves",
+        "squad & <friends>",
+        "bezier",
+        "(traced: tip of body x)",
+        "ω x",
+        "ω y",
+        "ω z",
+        "key",
+        "control point",
+        "far side",
+        "joint",
+        "angular speed |ω| (rad per unit t)",
+        "t",
+    ] {
+        assert!(texts.contains(&entry), "no <text> {entry:?} in {texts:?}");
+    }
+    assert!(
+        doc.descendants().any(|n| n.has_tag_name("radialGradient")),
+        "the sphere is a radial gradient"
+    );
+    // --format agrees with the extension, or names a file without one.
+    let plain = dir.join("figure");
+    let ok = spherekit(
+        &[
+            "render",
+            "-",
+            "-o",
+            plain.to_str().unwrap(),
+            "--format",
+            "svg",
+            "--size",
+            "64",
+        ],
+        S2_SCENE,
+    );
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    assert!(std::fs::read_to_string(&plain).unwrap().contains("<svg"));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn render_refuses_extensions_it_cannot_write() {
+    let dir = std::env::temp_dir().join(format!("spherekit-ext-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (name, extra, expected) in [
+        (
+            "figure.jpg",
+            &[][..],
+            "cannot write .jpg files (render writes .png and .svg)",
+        ),
+        ("figure.pdf", &[][..], "cannot write .pdf files"),
+        (
+            "figure.png",
+            &["--format", "svg"][..],
+            "does not match --format svg",
+        ),
+        (
+            "figure.svg",
+            &["--format", "gif"][..],
+            "--format: \"gif\" is not a format",
+        ),
+    ] {
+        let out = dir.join(name);
+        let mut args = vec!["render", "-", "-o", out.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let bad = spherekit(&args, S2_SCENE);
+        assert_eq!(bad.status.code(), Some(2), "{name}");
+        let line = String::from_utf8(bad.stderr).unwrap();
+        assert_eq!(line.lines().count(), 1, "{line}");
+        assert!(
+            line.contains(expected),
+            "got `{line}`, expected `{expected}`"
+        );
+        assert!(!out.exists(), "nothing is written under {name}");
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -4,7 +4,7 @@
 //! Golden images: every scene in `tests/golden/` renders to exactly its reference PNG.
 //! See `spherekit_cli::golden` for re-blessing.
 
-use spherekit_cli::golden::{check, golden_dir, scene_names};
+use spherekit_cli::golden::{check, check_svg, golden_dir, scene_names, svg_names};
 
 #[test]
 fn every_golden_scene_matches_its_reference() {
@@ -44,4 +44,15 @@ fn every_reference_has_a_scene() {
             );
         }
     }
+}
+
+#[test]
+fn every_svg_golden_matches_its_reference_text() {
+    let names = svg_names().unwrap_or_default();
+    assert!(!names.is_empty(), "no SVG goldens in tests/golden/svg");
+    let failures: Vec<String> = names
+        .iter()
+        .filter_map(|n| check_svg(n).err().map(|e| e.to_string()))
+        .collect();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
