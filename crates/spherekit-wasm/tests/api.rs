@@ -151,7 +151,11 @@ fn continuity_reports_the_joints() {
 #[wasm_bindgen_test]
 fn render_has_the_plot_strip_on_s3() {
     let rgba = render_rgba(S3, 64).unwrap();
-    assert_eq!(rgba.len(), 64 * (64 + 16) * 4, "S3 has the plot strip");
+    assert_eq!(rgba.len() % (64 * 4), 0, "whole rows, 64 wide");
+    // The sphere's square, then the plot strip (a quarter of the size) and the legend.
+    assert!(rgba.len() / (64 * 4) >= 64 + 16, "S3 has the plot strip");
+    let s2 = render_rgba(S2, 64).unwrap();
+    assert_eq!(s2.len(), 64 * 64 * 4, "one S2 curve: the sphere alone");
     assert!(rgba.chunks(4).all(|p| p[3] == 255), "opaque");
 }
 
