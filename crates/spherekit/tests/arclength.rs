@@ -20,11 +20,6 @@ use spherekit::{
 };
 use support::{Rng, check_derivatives_at, interior_parameters};
 
-/// `SPEED_SCALE·|c′(t)|`.
-fn speed<C: Curve>(c: &C, t: f64) -> f64 {
-    c.jet(t).velocity.length() * C::Point::SPEED_SCALE
-}
-
 /// Composite Simpson of the speed over `[a, b]` with `n` (even) intervals per piece of the
 /// curve, split at the joints (where the speed may have a kink).
 fn simpson_length<C: Curve>(c: &C, a: f64, b: f64, n: usize) -> f64 {
