@@ -10,7 +10,7 @@ demo:
     cargo run --quiet --release -p spherekit-cli --bin spherekit -- sample examples/orientations.json --deriv
 
 # Everything CI runs, fast checks first
-test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e
+test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e test-python
 
 # Formatting
 fmt-check:
@@ -43,6 +43,14 @@ corpus:
 unit:
     cargo test --workspace --all-features --locked
 
+# The Python module: build it into .tools/pyvenv (pinned numpy, scipy, numpy-quaternion, pytest from PyPI) and run its pytest suite
+test-python:
+    bash scripts/setup-python.sh python -m pytest -q python/tests
+
+# Time the Python module against scipy in one run (see BENCHMARKS.md, section 7)
+bench-python:
+    bash scripts/setup-python.sh python scripts/bench_python.py
+
 # API docs, warnings are errors
 doc:
     RUSTDOCFLAGS="-D warnings" cargo doc --workspace --all-features --no-deps --locked
@@ -53,7 +61,7 @@ duplicates:
 
 # Re-bless failing golden images (UPDATE_GOLDENS=force rewrites all); refused in CI
 bless:
-    UPDATE_GOLDENS=1 cargo test -p spherekit-cli --test golden
+    UPDATE_GOLDENS=1 cargo test -p spherekit-cli --test it golden::
 
 # Regenerate tests/golden/contact-sheet.png from the references
 contact-sheet:

@@ -38,7 +38,8 @@ DICT = "fuzz/scene.dict"
 # Scene keys and values of the format itself (the registry adds methods and parameters).
 DICT_TOKENS = ["space", "method", "points", "knots", "params", "canonicalize", "closed",
                "quaternion_order", "xyzw", "samples", "eval_at", "curves", "view", "color",
-               "S1", "S2", "S3", "S5"]
+               "label", "camera", "plot", "speed", "omega", "none", "plot_time", "normalized",
+               "frames", "axes", "accuracy", "legend", "title", "S1", "S2", "S3", "S5"]
 DICT_LITERALS = ["1e-9", "1e300", "-1e300", "1e-300", "0.999999999", "-1", "true", "false"]
 
 

@@ -2,7 +2,7 @@
 # Copyright 2026 the Spherekit Authors
 # SPDX-License-Identifier: Apache-2.0 OR MIT
 """Writes crates/spherekit/tests/data/rotation_spline_scipy.json: scipy's RotationSpline on a few
-random key sets with non-uniform times, for the `scipy_agreement` test of tests/cubic.rs.
+random key sets with non-uniform times, for the `scipy_agreement` test of tests/it/cubic.rs.
 
     python3 -m venv .tools/pyvenv && .tools/pyvenv/bin/pip install scipy==1.17.1 numpy==2.4.6
     .tools/pyvenv/bin/python scripts/scipy_rotation_spline_fixture.py

@@ -227,7 +227,7 @@ test('every malformed scene of tests/robustness/bad is refused by the wasm API a
   const names = (await readdir(badDir)).filter((n) => n.endsWith('.json')).sort();
   assert.ok(names.length >= 40, `only ${names.length} bad scenes`);
   // The bytes as the page would receive them as text: invalid UTF-8 becomes U+FFFD and a BOM is
-  // kept (as String::from_utf8_lossy does in crates/spherekit-cli/tests/robustness.rs).
+  // kept (as String::from_utf8_lossy does in crates/spherekit-cli/tests/it/robustness.rs).
   // As there, the .txt is the CLI's message for a file it cannot read as UTF-8 text, so such a
   // scene must only be refused here.
   const cases = await Promise.all(names.map(async (name) => {
@@ -447,6 +447,41 @@ test('screenshots of the playground', async () => {
     await page.screenshot({ path: path.join(outDir, 'playground-s3-key.png') });
   }
   assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('Chromium parses and draws every SVG golden (spherekit render -o x.svg)', async () => {
+  const svgDir = path.join(goldenDir, 'svg');
+  const names = (await readdir(svgDir)).filter((n) => n.endsWith('.svg') && !n.endsWith('.new.svg')).sort();
+  assert.ok(names.length > 0, 'SVG goldens exist');
+  const page = await newPage();
+  await page.goto(`${origin}/index.html`);
+  for (const name of names) {
+    const text = await readFile(path.join(svgDir, name), 'utf8');
+    const result = await page.evaluate(async (svg) => {
+      const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
+      const error = doc.querySelector('parsererror')?.textContent ?? null;
+      const texts = [...doc.querySelectorAll('text')].map((t) => t.textContent);
+      const img = new Image();
+      img.src = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
+      await img.decode();
+      // Draw it: some pixels must be neither white nor transparent.
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      let inked = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200)) inked++;
+      return { error, texts: texts.length, width: img.naturalWidth, height: img.naturalHeight, inked };
+    }, text);
+    assert.equal(result.error, null, `${name} parses as SVG`);
+    assert.equal(result.width, GOLDEN_SIZE, `${name} width`);
+    assert.ok(result.texts >= 4, `${name} has its legend (and axes) as <text>`);
+    assert.ok(result.inked > 1000, `${name} draws something (${result.inked} inked pixels)`);
+  }
+  assert.deepEqual(page.errors, []);
   await page.close();
 });
 

@@ -22,6 +22,7 @@ export function curveControls(c, curve, space, method, edit) {
     const value = params[spec.name] ?? spec.default;
     if (spec.type === 'choice') controls.push(choiceControl(spec, value, edit));
     else if (spec.type === 'bool') controls.push(boolControl(spec, value, edit));
+    else if (spec.type === 'vector') controls.push(vectorControl(spec, value, edit));
     else controls.push(...numberControls(spec, value, n, edit));
   }
   if (method?.closes) controls.push(closedToggle(curve, edit));
@@ -44,6 +45,25 @@ function closedToggle(curve, edit) {
   // The knots of an open curve do not fit a closed one (one more): they go.
   box.addEventListener('change', () => edit.fields({ closed: box.checked ? true : null, knots: null }));
   label.append(box, ' closed loop');
+  return label;
+}
+
+/** A vector (a velocity) as comma-separated numbers; empty removes it. */
+function vectorControl(spec, value, edit) {
+  const label = document.createElement('label');
+  label.className = 'row';
+  label.title = spec.summary;
+  const input = document.createElement('input');
+  input.className = 'params';
+  input.spellcheck = false;
+  input.value = Array.isArray(value) ? value.join(', ') : '';
+  input.placeholder = 'x, y, z';
+  input.setAttribute('aria-label', spec.label);
+  input.addEventListener('change', () => {
+    const text = input.value.trim();
+    edit.param(spec.name, text ? text.split(/[\s,]+/).filter(Boolean).map(Number) : null);
+  });
+  label.append(`${spec.label} `, input);
   return label;
 }
 

@@ -4,10 +4,10 @@ import * as sk from '../pkg/spherekit_wasm.js';
 import { drawBodies } from '../draw.js';
 import { $, state, fixedSize, showError } from './state.js';
 
-/** Whether the scene shows a speed plot under the sphere (the renderer's default on S³). */
+/** Whether the scene shows a plot under the sphere (speed, or speed and omega; the renderer's default on S³). */
 export function hasPlot() {
   const view = JSON.parse(state.pg.scene_json()).view ?? {};
-  return view.plot ? view.plot === 'speed' : state.pg.space() === 'S3';
+  return view.plot ? view.plot !== 'none' : state.pg.space() === 'S3';
 }
 
 function fit() {
@@ -19,7 +19,10 @@ function fit() {
   }
   const w = stage.clientWidth - 16;
   const h = window.innerHeight - stage.getBoundingClientRect().top - 24;
-  const factor = hasPlot() ? 1.25 : 1;
+  // The frame's height per width: the last frame's if it had the same plot strip (plots and
+  // the legend make it taller than wide), or a guess.
+  const plot = hasPlot();
+  const factor = state.aspect?.plot === plot ? state.aspect.value : plot ? 1.4 : 1;
   const css = Math.max(160, Math.min(w, h / factor));
   state.size = Math.min(4096, Math.floor(css * state.dpr));
 }
@@ -43,6 +46,7 @@ export function drawNow() {
   } catch (e) {
     showError(e.message); // a drawing failure; a good draw leaves an edit's message alone
   }
+  state.aspect = { plot: hasPlot(), value: canvas.height / canvas.width };
   const css = (px) => `${px / state.dpr}px`;
   canvas.style.width = css(canvas.width);
   canvas.style.height = css(canvas.height);

@@ -83,7 +83,9 @@ pub enum GoldenError {
 }
 
 fn bless_command(name: &str) -> String {
-    format!("UPDATE_GOLDENS={name} cargo test -p spherekit-cli --test golden (or `./run bless`)")
+    format!(
+        "UPDATE_GOLDENS={name} cargo test -p spherekit-cli --test it golden:: (or `./run bless`)"
+    )
 }
 
 impl fmt::Display for GoldenError {
@@ -361,6 +363,75 @@ fn diff_image(expected: &Pixmap, actual: &Pixmap) -> Pixmap {
     out
 }
 
+/// The SVG goldens: `tests/golden/svg/NAME.svg` is the SVG of scene `tests/golden/NAME.json`
+/// at [`GOLDEN_SIZE`], compared as text. Their names, sorted.
+///
+/// # Errors
+///
+/// [`GoldenError::Io`] if the directory cannot be read.
+pub fn svg_names() -> Result<Vec<String>, GoldenError> {
+    let dir = golden_dir().join("svg");
+    let entries = std::fs::read_dir(&dir)
+        .map_err(|e| GoldenError::Io(format!("cannot read {}: {e}", dir.display())))?;
+    let mut names: Vec<String> = entries
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| {
+            p.extension().is_some_and(|x| x == "svg") && !p.to_string_lossy().ends_with(".new.svg")
+        })
+        .map(|p| stem(&p))
+        .collect();
+    names.sort();
+    Ok(names)
+}
+
+/// Renders scene `name` as SVG and compares it, as text, with `tests/golden/svg/NAME.svg`
+/// (blessed like the PNGs, by `UPDATE_GOLDENS`; a mismatch writes `NAME.new.svg`).
+///
+/// # Errors
+///
+/// A [`GoldenError`] naming the first differing line.
+pub fn check_svg(name: &str) -> Result<(), GoldenError> {
+    let mode = Mode::from_env();
+    let dir = golden_dir();
+    let reference = dir.join("svg").join(format!("{name}.svg"));
+    let new_path = dir.join("svg").join(format!("{name}.new.svg"));
+    let text = std::fs::read_to_string(dir.join(format!("{name}.json")))
+        .map_err(|e| GoldenError::Io(format!("{name}.json: {e}")))?;
+    let scene = Scene::from_json(&text).map_err(|e| GoldenError::Scene {
+        name: name.to_owned(),
+        message: e.to_string(),
+    })?;
+    let actual =
+        spherekit_render::render_svg(&scene, GOLDEN_SIZE).map_err(|e| GoldenError::Scene {
+            name: name.to_owned(),
+            message: e.to_string(),
+        })?;
+    let expected = std::fs::read_to_string(&reference).unwrap_or_default();
+    let failed = expected != actual;
+    if mode.blesses(name, failed) {
+        if std::env::var_os("CI").is_some() {
+            return Err(GoldenError::BlessInCi);
+        }
+        return write(&reference, actual.as_bytes());
+    }
+    if failed {
+        write(&new_path, actual.as_bytes())?;
+        let line = expected
+            .lines()
+            .zip(actual.lines())
+            .position(|(a, b)| a != b)
+            .unwrap_or_else(|| expected.lines().count().min(actual.lines().count()));
+        return Err(GoldenError::Io(format!(
+            "svg/{name}.svg: the SVG differs from line {} on; see {}; if intended: {}",
+            line + 1,
+            new_path.display(),
+            bless_command(name)
+        )));
+    }
+    Ok(())
+}
+
 /// One PNG of thumbnails of every golden reference, `columns` across, each `thumb` pixels wide.
 ///
 /// # Errors
@@ -380,7 +451,14 @@ pub fn contact_sheet(columns: u32, thumb: u32) -> Result<Pixmap, GoldenError> {
     let count = u32::try_from(images.len()).unwrap_or(u32::MAX).max(1);
     let rows = count.div_ceil(columns);
     let gap = 6;
-    let cell_h = thumb * 5 / 4;
+    // As tall as the tallest thumbnail (figures with plots and legends are taller than wide).
+    let cell_h = images
+        .iter()
+        .map(|img| {
+            (u64::from(img.height()) * u64::from(thumb)).div_ceil(u64::from(img.width().max(1)))
+        })
+        .max()
+        .map_or(thumb, |h| u32::try_from(h).unwrap_or(thumb));
     let mut sheet = Pixmap::new(columns * (thumb + gap) + gap, rows * (cell_h + gap) + gap)
         .ok_or_else(|| GoldenError::Io("contact sheet too large".into()))?;
     sheet.fill(Color::WHITE);

@@ -9,7 +9,8 @@ pub mod golden;
 use tiny_skia::Pixmap;
 
 /// Encodes a pixmap as a compact PNG: RGB when every pixel is opaque (the renderer's images
-/// are), RGBA otherwise, with the strongest deflate setting of the `png` crate.
+/// are), RGBA otherwise, with the strongest deflate setting of the `png` crate and whichever
+/// of its row filter strategies gives the smallest file.
 ///
 /// # Errors
 ///
@@ -26,16 +27,29 @@ pub fn encode_png(pixmap: &Pixmap) -> Result<Vec<u8>, png::EncodingError> {
     } else {
         (rgba, png::ColorType::Rgba)
     };
-    let mut out = Vec::new();
-    {
-        let mut encoder = png::Encoder::new(&mut out, pixmap.width(), pixmap.height());
-        encoder.set_color(color);
-        encoder.set_depth(png::BitDepth::Eight);
-        encoder.set_compression(png::Compression::High);
-        let mut writer = encoder.write_header()?;
-        writer.write_image_data(&data)?;
+    let mut best: Option<Vec<u8>> = None;
+    for filter in [
+        png::Filter::Adaptive,
+        png::Filter::MinEntropy,
+        png::Filter::Paeth,
+        png::Filter::Sub,
+        png::Filter::Up,
+    ] {
+        let mut out = Vec::new();
+        {
+            let mut encoder = png::Encoder::new(&mut out, pixmap.width(), pixmap.height());
+            encoder.set_color(color);
+            encoder.set_depth(png::BitDepth::Eight);
+            encoder.set_compression(png::Compression::High);
+            encoder.set_filter(filter);
+            let mut writer = encoder.write_header()?;
+            writer.write_image_data(&data)?;
+        }
+        if best.as_ref().is_none_or(|b| out.len() < b.len()) {
+            best = Some(out);
+        }
     }
-    Ok(out)
+    Ok(best.unwrap_or_default())
 }
 
 /// Decodes a PNG (8-bit RGB or RGBA) into a pixmap.

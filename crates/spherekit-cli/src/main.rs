@@ -5,7 +5,7 @@
 //!
 //! ```text
 //! spherekit sample SCENE.json|- [--deriv] [--frame space|body] [--continuity] [--samples N]
-//! spherekit render SCENE.json|- -o OUT.png [--size N]
+//! spherekit render SCENE.json|- -o OUT.png|OUT.svg [--format png|svg] [--size N]
 //! spherekit methods [--json]
 //! ```
 //!
@@ -30,9 +30,12 @@ commands:
                      at every joint (c0, c1, c2; g1 of the unit tangent) and
                      its class (C⁰, G¹, C¹, C², … Cⁿ)
       --samples N    N uniform samples over the domain (overrides the scene)
-  render SCENE.json -o OUT.png [--size N]
-      Draw the scene (sphere, curves, speed plot) into a PNG, N pixels wide
-      (default 512). No file is written when the scene is bad.
+  render SCENE.json -o OUT.png|OUT.svg [--format png|svg] [--size N]
+      Draw the scene (sphere, curves, plots, legend) into a PNG, or the same
+      picture as SVG (vector strokes, text as <text>), N pixels wide (default
+      512). The format follows the file's extension (.png or .svg) or
+      --format; any other extension is an error. No file is written when the
+      scene is bad.
   methods [--json]
       List the curve methods and the spaces each supports; with --json the
       whole registry: knots, minimum points, parameters with type, range
@@ -96,6 +99,10 @@ fn methods() {
     for m in METHODS {
         println!("{:<14} {:<14} {}", m.id, m.spheres.describe(), m.summary);
     }
+    println!(
+        "\nEvery method samples on the spheres listed; `render` draws S1, S2 and S3 scenes \
+         (S<m> for m >= 4 is refused)."
+    );
 }
 
 fn read_scene(path: &str) -> Result<String, Failure> {
@@ -165,9 +172,48 @@ fn sample(args: &[String]) -> Result<(), Failure> {
         })
 }
 
+/// The image formats `render` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Format {
+    Png,
+    Svg,
+}
+
+impl Format {
+    fn parse(name: &str) -> Option<Self> {
+        match name.to_ascii_lowercase().as_str() {
+            "png" => Some(Self::Png),
+            "svg" => Some(Self::Svg),
+            _ => None,
+        }
+    }
+}
+
+/// The format to write `out` in: its extension's, or `--format`'s; they must agree.
+fn output_format(out: &str, format: Option<Format>) -> Result<Format, Failure> {
+    let extension = std::path::Path::new(out)
+        .extension()
+        .map(|e| e.to_string_lossy().into_owned());
+    match (extension, format) {
+        (None, f) => Ok(f.unwrap_or(Format::Png)),
+        (Some(e), f) => match (Format::parse(&e), f) {
+            (Some(from_name), None) => Ok(from_name),
+            (Some(from_name), Some(f)) if from_name == f => Ok(f),
+            (Some(_), Some(f)) => Err(bad(format!(
+                "-o {out}: the extension .{e} does not match --format {}",
+                if f == Format::Png { "png" } else { "svg" }
+            ))),
+            (None, _) => Err(bad(format!(
+                "-o {out}: cannot write .{e} files (render writes .png and .svg)"
+            ))),
+        },
+    }
+}
+
 fn render(args: &[String]) -> Result<(), Failure> {
     let mut path = None;
     let mut out = None;
+    let mut format = None;
     let mut size = 512_u32;
     let mut it = args.iter();
     while let Some(a) = it.next() {
@@ -178,6 +224,12 @@ fn render(args: &[String]) -> Result<(), Failure> {
                         .ok_or_else(|| bad("-o needs a file name"))?
                         .clone(),
                 );
+            }
+            "--format" => {
+                let v = it.next().ok_or_else(|| bad("--format needs png or svg"))?;
+                format = Some(Format::parse(v).ok_or_else(|| {
+                    bad(format!("--format: \"{v}\" is not a format: use png or svg"))
+                })?);
             }
             "--size" => {
                 let v = it.next().ok_or_else(|| bad("--size needs a number"))?;
@@ -191,15 +243,23 @@ fn render(args: &[String]) -> Result<(), Failure> {
         }
     }
     let path = path.ok_or_else(|| bad("render: give a scene file, or - for standard input"))?;
-    let out = out.ok_or_else(|| bad("render: give the output file with -o OUT.png"))?;
+    let out = out.ok_or_else(|| bad("render: give the output file with -o OUT.png or OUT.svg"))?;
+    let format = output_format(&out, format)?;
     let text = read_scene(&path)?;
     let scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
-    let pixmap = spherekit_render::render(&scene, size).map_err(|e| bad(e.to_string()))?;
-    let png = spherekit_cli::encode_png(&pixmap).map_err(|e| Failure {
-        status: 1,
-        message: format!("cannot encode the PNG: {e}"),
-    })?;
-    std::fs::write(&out, png).map_err(|e| Failure {
+    let bytes = match format {
+        Format::Png => {
+            let pixmap = spherekit_render::render(&scene, size).map_err(|e| bad(e.to_string()))?;
+            spherekit_cli::encode_png(&pixmap).map_err(|e| Failure {
+                status: 1,
+                message: format!("cannot encode the PNG: {e}"),
+            })?
+        }
+        Format::Svg => spherekit_render::render_svg(&scene, size)
+            .map_err(|e| bad(e.to_string()))?
+            .into_bytes(),
+    };
+    std::fs::write(&out, bytes).map_err(|e| Failure {
         status: 1,
         message: format!("cannot write {out}: {e}"),
     })

@@ -7,7 +7,8 @@
 use spherekit::glam::DVec3;
 use tiny_skia::{Pixmap, Point};
 
-use crate::stroke::{Cap, Pen, Strokes, blend, length, pixels};
+use crate::stroke::{Cap, Pen, blend, length, pixels};
+use crate::surface::Surface;
 
 /// An opaque colour.
 pub(crate) type Rgb = [u8; 3];
@@ -140,20 +141,36 @@ impl Canvas {
 
     /// Draws the shaded sphere and then every item, without the silhouette: the backdrop that
     /// [`Canvas::draw`] draws on (see `render_built`).
-    pub(crate) fn draw_backdrop(&self, pixmap: &mut Pixmap) {
+    pub(crate) fn draw_backdrop(&self, surface: &mut dyn Surface) {
         let (cx, cy, r) = self.disc();
-        shade_disc(pixmap, cx, cy, r);
-        Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
-            for item in self.back.iter().chain(&self.front) {
-                self.draw_item(pixmap, strokes, item);
+        surface.sphere(cx, cy, r);
+        for item in self.back.iter().chain(&self.front) {
+            self.draw_item(surface, item);
+        }
+    }
+
+    /// Which kinds of marks there are: discs, squares, diamonds, and dashed lines on the far
+    /// side (for the legend).
+    pub(crate) fn kinds(&self) -> Kinds {
+        let mut k = Kinds::default();
+        for item in self.back.iter().chain(&self.front) {
+            match item {
+                Item::Marker(_, Shape::Dot, ..) => k.dot = true,
+                Item::Marker(_, Shape::Square, ..) => k.square = true,
+                Item::Marker(_, Shape::Diamond, ..) => k.diamond = true,
+                Item::Line(_, style, false) => {
+                    k.far_dashed |= style.back_dashed && style.back_alpha > 0.0;
+                }
+                Item::Line(..) => {}
             }
-        });
+        }
+        k
     }
 
     /// Draws everything on the far side, the silhouette, then the near side.
-    pub(crate) fn draw(&self, pixmap: &mut Pixmap, strokes: &mut Strokes) {
+    pub(crate) fn draw(&self, surface: &mut dyn Surface) {
         for item in &self.back {
-            self.draw_item(pixmap, strokes, item);
+            self.draw_item(surface, item);
         }
         // The silhouette.
         let (cx, cy, r) = self.disc();
@@ -163,14 +180,14 @@ impl Canvas {
                 Point::from_xy(cx + r * libm::cosf(a), cy + r * libm::sinf(a))
             })
             .collect();
-        strokes.polyline(&rim, Pen::round(1.4 * self.scale));
-        strokes.paint(pixmap, [0x5b, 0x66, 0x73], 1.0);
+        surface.polyline(&rim, Pen::round(1.4 * self.scale));
+        surface.paint([0x5b, 0x66, 0x73], 1.0);
         for item in &self.front {
-            self.draw_item(pixmap, strokes, item);
+            self.draw_item(surface, item);
         }
     }
 
-    fn draw_item(&self, pixmap: &mut Pixmap, strokes: &mut Strokes, item: &Item) {
+    fn draw_item(&self, surface: &mut dyn Surface, item: &Item) {
         match item {
             Item::Line(pts, style, front) => {
                 let alpha = if *front {
@@ -187,28 +204,37 @@ impl Canvas {
                     cap: if dashed { Cap::Butt } else { Cap::Round },
                     dash: dashed.then_some([5.0 * self.scale, 4.0 * self.scale]),
                 };
-                strokes.polyline(pts, pen);
-                strokes.paint(pixmap, style.color, alpha);
+                surface.polyline(pts, pen);
+                surface.paint(style.color, alpha);
             }
             Item::Marker(p, shape, color, size, front) => {
                 let size = *size * self.scale;
-                draw_marker(pixmap, strokes, *p, *shape, *color, size, *front);
+                draw_marker(surface, *p, *shape, *color, size, *front);
             }
         }
     }
 }
 
+/// The kinds of marks on a canvas (see [`Canvas::kinds`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Kinds {
+    pub(crate) dot: bool,
+    pub(crate) square: bool,
+    pub(crate) diamond: bool,
+    pub(crate) far_dashed: bool,
+}
+
 /// The sphere's fill and the colour it darkens to at the limb.
-const SPHERE_FILL: Rgb = [0xf1, 0xf4, 0xf8];
-const SPHERE_LIMB: Rgb = [0xcd, 0xd5, 0xdf];
+pub(crate) const SPHERE_FILL: Rgb = [0xf1, 0xf4, 0xf8];
+pub(crate) const SPHERE_LIMB: Rgb = [0xcd, 0xd5, 0xdf];
 /// Where the limb shading starts, as a fraction of the radius.
-const LIMB_START: f32 = 0.93;
+pub(crate) const LIMB_START: f32 = 0.93;
 
 /// Paints the sphere's disc centred at `(cx, cy)` with radius `r`: a flat light fill that
 /// darkens linearly to the limb over the outer ring, with an anti-aliased edge. Flat inside,
 /// so it compresses well in PNG (a gradient over the whole disc costs ~40 KiB per 512 px
 /// image) and most rows are a run of one colour.
-fn shade_disc(pixmap: &mut Pixmap, cx: f32, cy: f32, r: f32) {
+pub(crate) fn shade_disc(pixmap: &mut Pixmap, cx: f32, cy: f32, r: f32) {
     let (width, height) = (pixmap.width() as usize, pixmap.height() as usize);
     let data = pixmap.data_mut();
     let reach = r + 0.5;
@@ -273,9 +299,8 @@ fn shade_disc(pixmap: &mut Pixmap, cx: f32, cy: f32, r: f32) {
 
 /// Draws a marker of `size` pixels centred at `p`: discs and squares are single thick segments
 /// (round and butt ended), outlines closed polylines.
-fn draw_marker(
-    pixmap: &mut Pixmap,
-    strokes: &mut Strokes,
+pub(crate) fn draw_marker(
+    surface: &mut dyn Surface,
     p: Point,
     shape: Shape,
     color: Rgb,
@@ -288,10 +313,10 @@ fn draw_marker(
     let at = |x: f32, y: f32| Point::from_xy(p.x + x, p.y + y);
     if shape == Shape::Dot {
         // A white disc under the coloured one: a dot with a white rim.
-        strokes.polyline(&[p, p], Pen::round(2.0 * h + rim));
-        strokes.paint(pixmap, [0xff; 3], alpha);
-        strokes.polyline(&[p, p], Pen::round(2.0 * h - rim));
-        strokes.paint(pixmap, color, alpha);
+        surface.polyline(&[p, p], Pen::round(2.0 * h + rim));
+        surface.paint([0xff; 3], alpha);
+        surface.polyline(&[p, p], Pen::round(2.0 * h - rim));
+        surface.paint(color, alpha);
         return;
     }
     // A square (or a square turned by 45°: the diamond) is a butt-ended segment as wide as
@@ -309,7 +334,7 @@ fn draw_marker(
         )
     };
     let side = length(fill[1].x - fill[0].x, fill[1].y - fill[0].y);
-    strokes.polyline(
+    surface.polyline(
         &fill,
         Pen {
             width: side,
@@ -317,9 +342,9 @@ fn draw_marker(
             dash: None,
         },
     );
-    strokes.paint(pixmap, [0xff; 3], 0.8 * alpha);
+    surface.paint([0xff; 3], 0.8 * alpha);
     let mut outline = corners.to_vec();
     outline.push(corners[0]);
-    strokes.polyline(&outline, Pen::round(rim));
-    strokes.paint(pixmap, color, alpha);
+    surface.polyline(&outline, Pen::round(rim));
+    surface.paint(color, alpha);
 }

@@ -1,16 +1,19 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Draws spherekit scenes into [`tiny_skia::Pixmap`]s: the shaded sphere with a 30° graticule,
-//! curves on S² with their points and derived control points, rotation trajectories of the
-//! body axes for curves on S³, and a strip plotting the (angular) speed against the parameter.
+//! Draws spherekit scenes into [`tiny_skia::Pixmap`]s (and the same pictures as SVG,
+//! [`render_svg`]): the shaded sphere with a 30° graticule, curves on S² with their points and
+//! derived control points, rotation trajectories of the body axes for curves on S³, strips
+//! plotting the (angular) speed, or the velocity components, against the parameter with
+//! labelled axes, a legend and an optional title.
 //!
 //! The native `spherekit render` command, the golden-image tests and the browser playground
 //! all call [`render`], so they draw the same pixels: all math runs in f64 through `libm`
 //! until projection, and the rasterizer (a distance-based stroker of our own, drawing into the
 //! pixmap's premultiplied RGBA) uses only f32 arithmetic and `sqrt`, which are identical on
-//! native and wasm targets. There is no text in the images (fonts would make pixels depend on
-//! the platform).
+//! native and wasm targets. Text is drawn from an embedded subset of DejaVu Sans (see
+//! `fonts/LICENSE-DejaVu`) by a rasterizer of the same kind (`text.rs`), never from system
+//! fonts, so it is the same bytes everywhere too.
 //!
 //! # Example
 //!
@@ -26,19 +29,26 @@
 mod camera;
 mod canvas;
 mod flatten;
+mod legend;
 mod plot;
 mod stroke;
+mod surface;
+mod text;
 
 use core::fmt;
 use std::cell::RefCell;
 
 use spherekit::glam::DVec3;
-use spherekit::{Ambient, Curve, Manifold, S2Point, Side, SnPoint, UnitQuat};
-use spherekit_scene::{Built, BuiltCurve, Plot, Scene, SceneError, View};
+use spherekit::{
+    Ambient, Curve, Jet, Manifold, S2Point, Side, SnPoint, UnitQuat, angular_velocity_acceleration,
+};
+use spherekit_scene::{Built, BuiltCurve, Plot, PlotTime, Scene, SceneError, Space, View};
 use tiny_skia::{Color, Pixmap, Rect};
 
 pub use camera::{Camera, turn_towards, yaw_pitch};
 use canvas::{Canvas, LineStyle, Rgb, Shape};
+use stroke::Strokes;
+use surface::{Raster, Surface, Svg};
 
 /// The smallest and largest image sizes [`render`] accepts (pixels, the sphere's square).
 pub const SIZE_RANGE: (u32, u32) = (16, 4096);
@@ -120,54 +130,35 @@ pub fn render_built(
     curves: &[BuiltCurve],
     size: u32,
 ) -> Result<Pixmap, RenderError> {
-    if !(SIZE_RANGE.0..=SIZE_RANGE.1).contains(&size) {
-        return Err(RenderError::Size(size));
-    }
-    if !scene.space.drawable() {
-        return Err(RenderError::Space(scene.space.name()));
-    }
-    let view = scene.view()?;
-    let camera = Camera::of(&view, curves);
-    let strip = if view.plot == Plot::Speed {
-        size / 4
-    } else {
-        0
-    };
-    let axes = camera.axes();
-    let mut pixmap = backdrop(size, strip, axes).ok_or(RenderError::Size(size))?;
-    let mut canvas = Canvas::new(size, axes);
-    let single = curves.len() == 1;
-    let mut series = Vec::new();
-    for (i, (spec, curve)) in scene.curves.iter().zip(curves).enumerate() {
-        let color = spec.color.unwrap_or(PALETTE[i % PALETTE.len()]);
-        let polygon = !spec.method.interpolates;
-        let s = match curve {
-            BuiltCurve::S2(b) => {
-                draw_points(&mut canvas, b, color, polygon, &view, &|p: &S2Point| {
-                    p.as_dvec3()
-                });
-                speed_series(&*b.curve, 1.0, color, size)
-            }
-            BuiltCurve::Sn(b) => {
-                let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
-                draw_points(&mut canvas, b, color, polygon, &view, &embed);
-                speed_series(&*b.curve, 1.0, color, size)
-            }
-            BuiltCurve::S3(b) => {
-                draw_rotations(&mut canvas, b, color, single, &view);
-                // |ω| = 2|q′| (the half-angle factor).
-                speed_series(&*b.curve, 2.0, color, size)
-            }
+    let figure = Figure::new(scene, curves, size)?;
+    let frames: Vec<Rect> = figure.panels.iter().map(|(r, _)| *r).collect();
+    let mut pixmap =
+        backdrop(size, figure.height, figure.axes, &frames).ok_or(RenderError::Size(size))?;
+    Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+        let mut raster = Raster {
+            pixmap: &mut pixmap,
+            strokes,
         };
-        series.push(s);
-    }
-    stroke::Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
-        canvas.draw(&mut pixmap, strokes);
-        if let Some(area) = plot_area(size, strip) {
-            plot::draw(&mut pixmap, strokes, area, canvas.scale, &series);
-        }
+        figure.draw(&mut raster);
     });
     Ok(pixmap)
+}
+
+/// The same picture as [`render`] as an SVG document: vector strokes, the sphere as a radial
+/// gradient, the legend, axes and title as `<text>` (in DejaVu Sans, the font the PNG's text
+/// is drawn with, when the viewer has it).
+///
+/// # Errors
+///
+/// [`RenderError`] for a bad scene, view or size.
+pub fn render_svg(scene: &Scene, size: u32) -> Result<String, RenderError> {
+    let curves = scene.build()?;
+    let figure = Figure::new(scene, &curves, size)?;
+    let mut svg = Svg::new(size, figure.height);
+    let frames: Vec<Rect> = figure.panels.iter().map(|(r, _)| *r).collect();
+    draw_backdrop(&mut svg, size, figure.axes, &frames);
+    figure.draw(&mut svg);
+    Ok(svg.finish())
 }
 
 /// The camera [`render_built`] draws `curves` of `scene` with (its default depends on the
@@ -180,46 +171,361 @@ pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<Camera, RenderE
     Ok(Camera::of(&scene.view()?, curves))
 }
 
-/// Where the plot strip goes in a frame of `size` with a strip `strip` pixels high, if any.
-fn plot_area(size: u32, strip: u32) -> Option<Rect> {
-    if strip == 0 {
-        return None;
+/// Everything of a frame that depends on the curves, laid out: the sphere's marks, the plot
+/// strips, the legend and the title.
+struct Figure {
+    size: u32,
+    height: u32,
+    axes: [DVec3; 3],
+    scale: f32,
+    canvas: Canvas,
+    panels: Vec<(Rect, plot::Panel)>,
+    time: [f64; 2],
+    legend: Vec<legend::Entry>,
+    legend_top: f32,
+    title: Option<String>,
+}
+
+/// The height of one plot strip for a `size` sphere.
+fn strip_height(size: u32) -> u32 {
+    size * 3 / 10
+}
+
+impl Figure {
+    fn new(scene: &Scene, curves: &[BuiltCurve], size: u32) -> Result<Self, RenderError> {
+        if !(SIZE_RANGE.0..=SIZE_RANGE.1).contains(&size) {
+            return Err(RenderError::Size(size));
+        }
+        if !scene.space.drawable() {
+            return Err(RenderError::Space(scene.space.name()));
+        }
+        let view = scene.view()?;
+        let camera = Camera::of(&view, curves);
+        let axes = camera.axes();
+        let mut canvas = Canvas::new(size, axes);
+        let scale = canvas.scale;
+        let single = curves.len() == 1;
+        let normalized = view.plot_time == PlotTime::Normalized;
+        let omega = view.plot == Plot::Omega;
+        let mut speeds = Vec::new();
+        let mut components = Vec::new();
+        for (i, (spec, curve)) in scene.curves.iter().zip(curves).enumerate() {
+            let color = spec.color.unwrap_or(PALETTE[i % PALETTE.len()]);
+            let polygon = !spec.method.interpolates;
+            let sampled = match curve {
+                BuiltCurve::S2(b) => {
+                    draw_points(&mut canvas, b, color, polygon, &view, &|p: &S2Point| {
+                        p.as_dvec3()
+                    });
+                    sample(&*b.curve, size, normalized, &|j| {
+                        let v = j.velocity;
+                        [v.length(), v.x, v.y, v.z]
+                    })
+                }
+                BuiltCurve::Sn(b) => {
+                    let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
+                    draw_points(&mut canvas, b, color, polygon, &view, &embed);
+                    sample(&*b.curve, size, normalized, &|j| {
+                        [j.velocity.length(), 0.0, 0.0, 0.0]
+                    })
+                }
+                BuiltCurve::S3(b) => {
+                    draw_rotations(&mut canvas, b, color, single, &view);
+                    // |ω| = 2|q′| (the half-angle factor); ω in the space frame.
+                    sample(&*b.curve, size, normalized, &|j| {
+                        let w =
+                            angular_velocity_acceleration(j.point, j.velocity, j.acceleration).0;
+                        [2.0 * j.velocity.length(), w.x, w.y, w.z]
+                    })
+                }
+            };
+            speeds.push(sampled.series(0, color, None, true));
+            for k in 0..3 {
+                let (c, dash) = if single {
+                    (AXIS_COLORS[k], None)
+                } else {
+                    (color, COMPONENT_DASHES[k])
+                };
+                components.push(sampled.series(k + 1, c, dash, k == 0));
+            }
+        }
+        let s3 = scene.space == Space::S3;
+        let mut panels_content = Vec::new();
+        if view.plot != Plot::None {
+            panels_content.push(plot::Panel {
+                quantity: speed_label(s3, normalized),
+                time: if normalized { "u" } else { "t" },
+                signed: false,
+                series: speeds,
+            });
+        }
+        if omega {
+            panels_content.push(plot::Panel {
+                quantity: component_label(s3, normalized),
+                time: if normalized { "u" } else { "t" },
+                signed: true,
+                series: components,
+            });
+        }
+        let time = if normalized {
+            [0.0, 1.0]
+        } else {
+            curves
+                .iter()
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[a, b], c| {
+                    let [t0, t1] = c.domain();
+                    [a.min(t0), b.max(t1)]
+                })
+        };
+        let strip = strip_height(size);
+        let panels: Vec<(Rect, plot::Panel)> = panels_content
+            .into_iter()
+            .enumerate()
+            .filter_map(|(i, p)| {
+                let top = size + u32::try_from(i).unwrap_or(0) * strip;
+                plot_area(size, top, strip).map(|r| (r, p))
+            })
+            .collect();
+        let legend = if view.legend {
+            legend_entries(scene, &view, &canvas, single, !panels.is_empty())
+        } else {
+            Vec::new()
+        };
+        let plots = u32::try_from(panels.len()).unwrap_or(0) * strip;
+        let legend_h = legend::height(&legend, size, scale);
+        #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
+        let legend_top = if plots > 0 {
+            (size + plots) as f32
+        } else {
+            size as f32 * 0.985
+        };
+        Ok(Self {
+            size,
+            height: size + plots + legend_h,
+            axes,
+            scale,
+            canvas,
+            panels,
+            time,
+            legend,
+            legend_top,
+            title: view.title,
+        })
     }
+
+    /// Draws the figure over its backdrop.
+    fn draw(&self, surface: &mut dyn Surface) {
+        self.canvas.draw(surface);
+        for (area, panel) in &self.panels {
+            plot::draw(surface, *area, self.scale, panel, self.time);
+        }
+        legend::draw(
+            surface,
+            &self.legend,
+            self.legend_top,
+            self.size,
+            self.scale,
+        );
+        if let Some(title) = &self.title {
+            #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
+            let s = self.size as f32;
+            let mut px = (17.0 * self.scale).max(9.0);
+            let w = text::width(title, px);
+            if w > 0.96 * s {
+                px *= 0.96 * s / w;
+            }
+            let baseline = 0.025 * s + 0.5 * text::CAP_HEIGHT * px;
+            surface.text(
+                0.5 * s,
+                baseline,
+                title,
+                px,
+                POINT_COLOR,
+                surface::Anchor::Middle,
+            );
+        }
+    }
+}
+
+/// The dash patterns of the y and z components when several curves share the component plot
+/// (x is solid).
+const COMPONENT_DASHES: [Option<[f32; 2]>; 3] = [None, Some([7.0, 3.0]), Some([2.0, 2.5])];
+
+fn speed_label(s3: bool, normalized: bool) -> String {
+    let unit = if normalized {
+        "rad per unit u, u = t normalized per curve"
+    } else {
+        "rad per unit t"
+    };
+    if s3 {
+        format!("angular speed |ω| ({unit})")
+    } else {
+        format!("speed |p′| ({unit})")
+    }
+}
+
+fn component_label(s3: bool, normalized: bool) -> String {
+    let unit = if normalized { "u" } else { "t" };
+    if s3 {
+        format!("angular velocity ω, space frame (rad per unit {unit})")
+    } else {
+        format!("velocity p′ in x, y, z (per unit {unit})")
+    }
+}
+
+/// The legend: the curves (or, for one S³ curve, its traced body axes), the triads, the
+/// velocity components, and the kinds of marks in the picture.
+fn legend_entries(
+    scene: &Scene,
+    view: &View,
+    canvas: &Canvas,
+    single: bool,
+    plotted: bool,
+) -> Vec<legend::Entry> {
+    use legend::{Entry, Swatch};
+    let entry = |swatch, label: &str, group| Entry {
+        swatch,
+        label: label.to_owned(),
+        group,
+    };
+    let s3 = scene.space == Space::S3;
+    let name = |i: usize| {
+        let spec = &scene.curves[i];
+        spec.label
+            .clone()
+            .unwrap_or_else(|| spec.method.id.to_owned())
+    };
+    let axis = ["x", "y", "z"];
+    let mut out = Vec::new();
+    if s3 && single {
+        out.push(entry(Swatch::None, &format!("{}:", name(0)), 0));
+        for &k in &view.axes {
+            out.push(entry(
+                Swatch::Line(AXIS_COLORS[k], None, 1.0),
+                &format!("body {} axis", axis[k]),
+                0,
+            ));
+        }
+    } else {
+        for (i, spec) in scene.curves.iter().enumerate() {
+            let color = spec.color.unwrap_or(PALETTE[i % PALETTE.len()]);
+            out.push(entry(Swatch::Line(color, None, 1.0), &name(i), 0));
+        }
+        if s3 {
+            let traced: Vec<&str> = view.axes.iter().map(|&k| axis[k]).collect();
+            out.push(entry(
+                Swatch::None,
+                &format!("(traced: tip of body {})", traced.join(", ")),
+                0,
+            ));
+        }
+    }
+    // (One curve's triads are in the body axes' colours, already in the legend.)
+    if s3 && view.frames > 0 && !single {
+        for (k, a) in axis.iter().enumerate() {
+            out.push(entry(
+                Swatch::Line(AXIS_COLORS[k], None, 1.0),
+                &format!("triad {a}"),
+                1,
+            ));
+        }
+    }
+    if view.plot == Plot::Omega {
+        let symbol = if s3 { "ω" } else { "p′" };
+        for (k, a) in axis.iter().enumerate() {
+            let swatch = if single {
+                Swatch::Line(AXIS_COLORS[k], None, 1.0)
+            } else {
+                Swatch::Line(POINT_COLOR, COMPONENT_DASHES[k], 1.0)
+            };
+            out.push(entry(swatch, &format!("{symbol} {a}"), 2));
+        }
+    }
+    let kinds = canvas.kinds();
+    let mark = POINT_COLOR;
+    if kinds.dot {
+        out.push(entry(Swatch::Marker(Shape::Dot, mark), "key", 3));
+    }
+    if kinds.square {
+        out.push(entry(
+            Swatch::Marker(Shape::Square, mark),
+            "control point",
+            3,
+        ));
+    }
+    if kinds.diamond {
+        out.push(entry(
+            Swatch::Marker(Shape::Diamond, mark),
+            "derived point",
+            3,
+        ));
+    }
+    if kinds.far_dashed {
+        out.push(entry(
+            Swatch::Line(mark, Some([5.0, 4.0]), 0.6),
+            "far side",
+            3,
+        ));
+    }
+    if plotted {
+        out.push(entry(Swatch::Tick(mark), "joint", 3));
+    }
+    out
+}
+
+/// Where the plot strip starting at row `top` (pixels) of a frame of `size` goes.
+fn plot_area(size: u32, top: u32, strip: u32) -> Option<Rect> {
     let s = f64::from(size);
     #[expect(clippy::cast_possible_truncation, reason = "pixels")]
     let (x, w) = ((0.04 * s) as f32, (0.92 * s) as f32);
     #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
-    let (y, h) = (size as f32 - 0.02 * size as f32, strip as f32 * 0.92);
+    let (y, h) = (top as f32 - 0.02 * size as f32, strip as f32 * 0.92);
     Rect::from_xywh(x, y, w, h)
 }
 
-/// The white page with the shaded sphere, its graticule and the plot strip's frame for one
-/// size and camera: the part of a frame that does not depend on the curves. The last one drawn is kept (per thread), so
-/// that redrawing after an edit that leaves the camera alone, such as dragging a point in the
-/// playground, starts from a copy. A copy and a fresh drawing are the same pixels.
-fn backdrop(size: u32, strip: u32, axes: [DVec3; 3]) -> Option<Pixmap> {
-    type Key = (u32, u32, [DVec3; 3]);
+/// The white page with the shaded sphere, its graticule and the plot strips' frames for one
+/// size and camera: the part of a frame that does not depend on the curves. The last one drawn
+/// is kept (per thread), so that redrawing after an edit that leaves the camera alone, such as
+/// dragging a point in the playground, starts from a copy. A copy and a fresh drawing are the
+/// same pixels.
+fn backdrop(size: u32, height: u32, axes: [DVec3; 3], frames: &[Rect]) -> Option<Pixmap> {
+    type Key = (u32, u32, [DVec3; 3], Vec<[u32; 4]>);
     thread_local! {
         static LAST: RefCell<Option<(Key, Pixmap)>> = const { RefCell::new(None) };
     }
-    let key = (size, strip, axes);
+    let rects = frames
+        .iter()
+        .map(|r| [r.left(), r.top(), r.width(), r.height()].map(f32::to_bits))
+        .collect();
+    let key = (size, height, axes, rects);
     LAST.with_borrow_mut(|last| {
         if let Some((k, pixmap)) = last.as_ref()
             && *k == key
         {
             return Some(pixmap.clone());
         }
-        let mut pixmap = Pixmap::new(size, size + strip)?;
+        let mut pixmap = Pixmap::new(size, height)?;
         pixmap.fill(Color::WHITE);
-        let mut canvas = Canvas::new(size, axes);
-        graticule(&mut canvas);
-        canvas.draw_backdrop(&mut pixmap);
-        if let Some(area) = plot_area(size, strip) {
-            plot::draw_frame(&mut pixmap, area, canvas.scale);
-        }
+        Strokes::with(size, height, |strokes| {
+            let mut raster = Raster {
+                pixmap: &mut pixmap,
+                strokes,
+            };
+            draw_backdrop(&mut raster, size, axes, frames);
+        });
         *last = Some((key, pixmap.clone()));
         Some(pixmap)
     })
+}
+
+/// Draws the backdrop (see [`backdrop`]) onto `surface`.
+fn draw_backdrop(surface: &mut dyn Surface, size: u32, axes: [DVec3; 3], frames: &[Rect]) {
+    let mut canvas = Canvas::new(size, axes);
+    graticule(&mut canvas);
+    canvas.draw_backdrop(surface);
+    for area in frames {
+        plot::draw_frame(surface, *area, canvas.scale);
+    }
 }
 
 fn graticule(canvas: &mut Canvas) {
@@ -355,20 +661,50 @@ fn draw_rotations(canvas: &mut Canvas, b: &Built<UnitQuat>, color: Rgb, single: 
     }
 }
 
-/// Samples the speed of one curve for the plot, piece by piece, with one-sided values at the
-/// joints, against its parameter mapped to [0, 1].
-fn speed_series<P: Manifold>(
+/// One curve's plotted quantities (speed and three components), sampled piece by piece with
+/// one-sided values at the joints.
+struct Sampled {
+    pieces: Vec<Vec<(f64, [f64; 4])>>,
+    joints: Vec<f64>,
+}
+
+impl Sampled {
+    /// Quantity `k` as a plot series.
+    fn series(&self, k: usize, color: Rgb, dash: Option<[f32; 2]>, joints: bool) -> plot::Series {
+        plot::Series {
+            color,
+            dash,
+            pieces: self
+                .pieces
+                .iter()
+                .map(|p| p.iter().map(|&(t, v)| (t, v[k])).collect())
+                .collect(),
+            joints: if joints {
+                self.joints.clone()
+            } else {
+                Vec::new()
+            },
+        }
+    }
+}
+
+/// Samples `values` of the jets of `curve` for the plot: against its own t, or with
+/// `normalized` against u = (t − t₀)/(t₁ − t₀), the rates then per unit u.
+fn sample<P: Manifold>(
     curve: &dyn Curve<Point = P>,
-    factor: f64,
-    color: Rgb,
     size: u32,
-) -> plot::SpeedSeries {
+    normalized: bool,
+    values: &dyn Fn(&Jet<P>) -> [f64; 4],
+) -> Sampled {
     let joints = curve.joints();
     let [t0, t1] = [joints[0], joints[joints.len() - 1]];
-    // The strip shows every curve over its whole domain, mapped to [0, 1].
-    let unit = |t: f64| (t - t0) / (t1 - t0);
+    let (unit, rate): (Box<dyn Fn(f64) -> f64>, f64) = if normalized {
+        (Box::new(move |t| (t - t0) / (t1 - t0)), t1 - t0)
+    } else {
+        (Box::new(|t| t), 1.0)
+    };
     let total = f64::from(size).max(64.0);
-    let finite = |v: f64| if v.is_finite() { v } else { 0.0 };
+    let finite = |v: [f64; 4]| v.map(|x| if x.is_finite() { rate * x } else { 0.0 });
     let pieces = joints
         .windows(2)
         .map(|w| {
@@ -390,16 +726,15 @@ fn speed_series<P: Manifold>(
                 .collect();
             let mut jets = vec![curve.jet(w[0]); n];
             curve.jet_many(&ts, &mut jets);
-            let end = factor * curve.jet_at(w[1], Side::Left).velocity.length();
+            let end = values(&curve.jet_at(w[1], Side::Left));
             ts.iter()
                 .zip(&jets)
-                .map(|(&t, j)| (unit(t), finite(factor * j.velocity.length())))
+                .map(|(&t, j)| (unit(t), finite(values(j))))
                 .chain(core::iter::once((unit(w[1]), finite(end))))
                 .collect()
         })
         .collect();
-    plot::SpeedSeries {
-        color,
+    Sampled {
         pieces,
         joints: joints.iter().map(|&t| unit(t)).collect(),
     }

@@ -14,8 +14,9 @@ use crate::scene::{SampleOptions, Scene};
 /// A curve built from a scene, with the extras a method derives.
 #[derive(Debug)]
 pub struct Built<P: Manifold> {
-    /// The curve.
-    pub curve: Box<dyn Curve<Point = P>>,
+    /// The curve (`Send + Sync`, so that a front end may evaluate it on another thread, e.g.
+    /// the Python module with the interpreter lock released).
+    pub curve: Box<dyn Curve<Point = P> + Send + Sync>,
     /// The scene's points, normalised (and on S³ canonicalised when the scene asks for it).
     pub inputs: Vec<P>,
     /// Derived control points (empty when the method has none).
@@ -31,7 +32,10 @@ pub struct Built<P: Manifold> {
 
 impl<P: ScenePoint> Built<P> {
     /// A built curve with no extras, C⁰ at its joints.
-    pub(crate) fn new(curve: impl Curve<Point = P> + 'static, inputs: Vec<P>) -> Self {
+    pub(crate) fn new(
+        curve: impl Curve<Point = P> + Send + Sync + 'static,
+        inputs: Vec<P>,
+    ) -> Self {
         Self {
             curve: Box::new(curve),
             inputs,
@@ -314,7 +318,9 @@ impl BuiltCurve {
 }
 
 /// The conversions between a sphere's points and the scene's number lists.
-pub trait ScenePoint: Manifold + 'static {
+///
+/// Points and vectors are `Send + Sync`, so that built curves are too.
+pub trait ScenePoint: Manifold<Vector: Send + Sync> + Send + Sync + 'static {
     /// Builds a point from scene coordinates (normalising).
     ///
     /// # Errors

@@ -474,7 +474,7 @@ fn curve_doc_mut(
 }
 
 /// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 7] = [
+const CURVE_FIELDS: [&str; 8] = [
     "method",
     "points",
     "knots",
@@ -482,6 +482,7 @@ const CURVE_FIELDS: [&str; 7] = [
     "canonicalize",
     "closed",
     "color",
+    "label",
 ];
 
 /// The description of curve `i` in a document (the curve's own fields, wherever they sit).

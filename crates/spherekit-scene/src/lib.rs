@@ -66,6 +66,8 @@ pub use edit::{Document, EditError};
 pub use error::{SceneError, one_line};
 pub use params::{Param, ParamKind, PerJoint};
 pub use registry::{KnotRule, METHODS, Method, Spheres, registry_json};
-pub use scene::{CurveSpec, DEFAULT_SAMPLES, MAX_SAMPLES, SampleOptions, Sampling, Scene};
+pub use scene::{
+    CurveSpec, DEFAULT_SAMPLES, MAX_LABEL_CHARS, MAX_SAMPLES, SampleOptions, Sampling, Scene,
+};
 pub use space::{MAX_DIMENSION, Space};
-pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, Plot, View};
+pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, MAX_TITLE_CHARS, Plot, PlotTime, View};

@@ -42,6 +42,8 @@ struct RawScene {
     #[serde(default)]
     color: Option<String>,
     #[serde(default)]
+    label: Option<String>,
+    #[serde(default)]
     curves: Option<Vec<RawCurve>>,
     #[serde(default)]
     samples: Option<f64>,
@@ -69,6 +71,8 @@ struct RawCurve {
     closed: Option<bool>,
     #[serde(default)]
     color: Option<String>,
+    #[serde(default)]
+    label: Option<String>,
 }
 
 /// Where to evaluate a curve.
@@ -97,13 +101,15 @@ pub struct CurveSpec {
     pub closed: bool,
     /// The colour to draw it in, `[r, g, b]`, when the scene gives one (`"#rrggbb"`).
     pub color: Option<[u8; 3]>,
+    /// The curve's name in the figure's legend, when the scene gives one (default: the method).
+    pub label: Option<String>,
 }
 
 /// A validated scene: its fields are checked, the curves are built by [`Scene::build`].
 ///
 /// A scene holds one curve (the fields `method`, `points`, `knots`, `params`, `canonicalize`,
-/// `color` at the top level) or several on the same sphere (`"curves": [{ "method", "points",
-/// "knots", "params", "canonicalize", "color" }, …]`), for comparing methods on the same keys.
+/// `color`, `label` at the top level) or several on the same sphere (`"curves": [{ "method",
+/// "points", "knots", "params", "canonicalize", "color", "label" }, …]`), for comparing methods on the same keys.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     /// The sphere.
@@ -167,6 +173,21 @@ fn parse_color(field: &str, c: Option<String>) -> Result<Option<[u8; 3]>, SceneE
     };
     let byte = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).unwrap_or(0);
     Ok(Some([byte(0), byte(2), byte(4)]))
+}
+
+/// The most characters a curve's `label` may have.
+pub const MAX_LABEL_CHARS: usize = 60;
+
+fn parse_label(label: Option<String>) -> Result<Option<String>, SceneError> {
+    let Some(l) = label else { return Ok(None) };
+    let n = l.chars().count();
+    if n == 0 || n > MAX_LABEL_CHARS || l.chars().any(char::is_control) {
+        return Err(field_error(
+            "label",
+            format!("must be 1 to {MAX_LABEL_CHARS} characters on one line"),
+        ));
+    }
+    Ok(Some(l))
 }
 
 impl CurveSpec {
@@ -240,6 +261,7 @@ impl CurveSpec {
             canonicalize: raw.canonicalize.unwrap_or(true),
             closed,
             color: parse_color("color", raw.color)?,
+            label: parse_label(raw.label)?,
         })
     }
 
@@ -344,10 +366,11 @@ impl Scene {
                     || raw.canonicalize.is_some()
                     || raw.closed.is_some()
                     || raw.color.is_some()
+                    || raw.label.is_some()
                 {
                     return Err(field_error(
                         "curves",
-                        "with \"curves\", give knots, params, canonicalize, closed and color inside each curve",
+                        "with \"curves\", give knots, params, canonicalize, closed, color and label inside each curve",
                     ));
                 }
                 if curves.is_empty() {
@@ -374,6 +397,7 @@ impl Scene {
                     canonicalize: raw.canonicalize,
                     closed: raw.closed,
                     color: raw.color,
+                    label: raw.label,
                 };
                 vec![CurveSpec::validate(space, raw_curve)?]
             }
@@ -508,7 +532,7 @@ impl Scene {
     /// [`sample_json`](Self::sample_json) with every option; `continuity` adds
     /// `continuity: [{ "t", "c0", "c1", "c2", "g1" }, …]`, the jumps of the point, of the first
     /// and second derivatives and of the unit tangent at each interior joint (see
-    /// [`continuity`](crate::continuity)).
+    /// [`spherekit::continuity`]).
     #[must_use]
     pub fn sample_json_with(&self, curves: &[BuiltCurve], options: SampleOptions) -> Value {
         let one = |spec: &CurveSpec, curve: &BuiltCurve| {

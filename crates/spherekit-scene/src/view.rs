@@ -16,19 +16,40 @@ use crate::space::Space;
 pub enum Plot {
     /// Angular speed |ω(t)| (S³) or speed |p′(t)| (other spheres) against t.
     Speed,
+    /// The speed, and under it the components of the angular velocity ω (S³, space frame) or
+    /// of the velocity p′ (S²) against t.
+    Omega,
     /// No strip.
     None,
 }
+
+/// The time axis of the plot strip.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlotTime {
+    /// One t axis for all curves, over the union of their domains, in their own units.
+    Shared,
+    /// Each curve's domain stretched to the full width (t normalized to [0, 1] per curve; the
+    /// speeds are then per unit of normalized t).
+    Normalized,
+}
+
+/// The most characters `view.title` may have.
+pub const MAX_TITLE_CHARS: usize = 120;
 
 /// Rendering options read from a scene's `view`.
 ///
 /// ```text
 /// "view": { "camera": [w, x, y, z] | { "yaw": deg, "pitch": deg },   default: see below
-///           "plot": "speed" | "none",            default "speed" on S3, "none" elsewhere
+///           "plot": "speed" | "omega" | "none",  default "speed" on S3, "none" elsewhere
+///                                                ("omega": speed and the components of ω or p′;
+///                                                S2 and S3)
+///           "plot_time": "shared" | "normalized", default "shared": one t axis for all curves
 ///           "frames": N,                         S3: body triads at N parameters (default 0)
 ///           "accuracy": radians,                 curve flattening accuracy (default 1e-3)
-///           "axes": ["x", "y", "z"] }            S3: the body axes whose tips are traced
+///           "axes": ["x", "y", "z"],             S3: the body axes whose tips are traced
 ///                                                (default all three for one curve, ["x"] for several)
+///           "legend": true | false,              default: on for several curves, and on S3
+///           "title": "text" }                    a line of text above the sphere (default none)
 /// ```
 ///
 /// Without `camera` the renderer chooses one (S² scenes are viewed from the direction of the
@@ -46,6 +67,12 @@ pub struct View {
     pub accuracy: f64,
     /// Which body axes (0 = x, 1 = y, 2 = z) S³ curves are drawn by.
     pub axes: Vec<usize>,
+    /// The plot strip's time axis.
+    pub plot_time: PlotTime,
+    /// Whether the figure has a legend.
+    pub legend: bool,
+    /// A line of text above the sphere.
+    pub title: Option<String>,
 }
 
 /// The default flattening accuracy in radians: a quarter of a pixel at 1 000 px.
@@ -97,13 +124,20 @@ impl View {
             Some(Value::Object(m)) => m,
             Some(_) => return Err(bad("", "must be an object")),
         };
-        if let Some(k) = map
-            .keys()
-            .find(|k| !["camera", "plot", "frames", "accuracy", "axes"].contains(&k.as_str()))
-        {
+        const OPTIONS: [&str; 8] = [
+            "camera",
+            "plot",
+            "plot_time",
+            "frames",
+            "accuracy",
+            "axes",
+            "legend",
+            "title",
+        ];
+        if let Some(k) = map.keys().find(|k| !OPTIONS.contains(&k.as_str())) {
             return Err(bad(
                 k,
-                "unknown view option (camera, plot, frames, accuracy, axes)",
+                format!("unknown view option ({})", OPTIONS.join(", ")),
             ));
         }
         let camera = match map.get("camera") {
@@ -152,9 +186,50 @@ impl View {
             None => Plot::None,
             Some(v) => match v.as_str() {
                 Some("speed") => Plot::Speed,
+                Some("omega") if matches!(space, Space::S2 | Space::S3) => Plot::Omega,
+                Some("omega") => {
+                    return Err(bad(
+                        "plot",
+                        "\"omega\" (velocity components) is drawn for S2 and S3 scenes only",
+                    ));
+                }
                 Some("none") => Plot::None,
-                _ => return Err(bad("plot", "must be \"speed\" or \"none\"")),
+                _ => return Err(bad("plot", "must be \"speed\", \"omega\" or \"none\"")),
             },
+        };
+        let plot_time = match map.get("plot_time") {
+            None => PlotTime::Shared,
+            Some(v) => match v.as_str() {
+                Some("shared") => PlotTime::Shared,
+                Some("normalized") => PlotTime::Normalized,
+                _ => return Err(bad("plot_time", "must be \"shared\" or \"normalized\"")),
+            },
+        };
+        let legend = match map.get("legend") {
+            None => several || quaternions,
+            Some(v) => v
+                .as_bool()
+                .ok_or_else(|| bad("legend", "must be true or false"))?,
+        };
+        let title = match map.get("title") {
+            None => None,
+            Some(v) => {
+                let t = v
+                    .as_str()
+                    .filter(|t| {
+                        let n = t.chars().count();
+                        (1..=MAX_TITLE_CHARS).contains(&n) && !t.chars().any(char::is_control)
+                    })
+                    .ok_or_else(|| {
+                        bad(
+                            "title",
+                            format!(
+                                "must be a string of 1 to {MAX_TITLE_CHARS} characters on one line"
+                            ),
+                        )
+                    })?;
+                Some(t.to_owned())
+            }
         };
         let frames = match map.get("frames") {
             None => 0,
@@ -210,6 +285,102 @@ impl View {
             frames,
             accuracy,
             axes,
+            plot_time,
+            legend,
+            title,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Scene;
+
+    fn view(json: &str, space: Space, curves: usize) -> Result<View, String> {
+        let v: Value = serde_json::from_str(json).expect("JSON");
+        View::from_json(Some(&v), space, curves).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn figure_options_default_by_the_picture() {
+        let one_s2 = view("{}", Space::S2, 1).expect("view");
+        assert!(!one_s2.legend, "one S2 curve: no legend");
+        assert_eq!(one_s2.plot_time, PlotTime::Shared);
+        assert_eq!(one_s2.title, None);
+        assert!(
+            view("{}", Space::S2, 2).expect("view").legend,
+            "several curves"
+        );
+        assert!(
+            view("{}", Space::S3, 1).expect("view").legend,
+            "S3 axis colours"
+        );
+        let v = view(
+            r#"{"legend": false, "title": "A", "plot": "omega", "plot_time": "normalized"}"#,
+            Space::S3,
+            3,
+        )
+        .expect("view");
+        assert!(!v.legend);
+        assert_eq!(v.title.as_deref(), Some("A"));
+        assert_eq!((v.plot, v.plot_time), (Plot::Omega, PlotTime::Normalized));
+    }
+
+    #[test]
+    fn bad_figure_options_name_the_field() {
+        let long = format!(r#"{{"title": "{}"}}"#, "x".repeat(MAX_TITLE_CHARS + 1));
+        for (json, space, expected) in [
+            (
+                r#"{"legend": 1}"#,
+                Space::S2,
+                "view.legend: must be true or false",
+            ),
+            (
+                r#"{"title": ""}"#,
+                Space::S2,
+                "view.title: must be a string of 1 to 120",
+            ),
+            (long.as_str(), Space::S2, "view.title: must be a string"),
+            (r#"{"title": "a\nb"}"#, Space::S2, "on one line"),
+            (
+                r#"{"plot_time": "own"}"#,
+                Space::S2,
+                "view.plot_time: must be",
+            ),
+            (r#"{"plot": "omega"}"#, Space::Sn(1), "view.plot: \"omega\""),
+            (
+                r#"{"plot": "phase"}"#,
+                Space::S2,
+                "view.plot: must be \"speed\", \"omega\" or \"none\"",
+            ),
+            (
+                r#"{"subtitle": "x"}"#,
+                Space::S2,
+                "view.subtitle: unknown view option",
+            ),
+        ] {
+            let e = view(json, space, 1).expect_err(json);
+            assert!(e.contains(expected), "{json}: {e}");
+        }
+    }
+
+    #[test]
+    fn curve_labels_are_checked_and_kept() {
+        let scene = Scene::from_json(
+            r#"{"space":"S2","curves":[{"method":"geodesic","points":[[1,0,0],[0,1,0]],"label":"arc"}]}"#,
+        )
+        .expect("scene");
+        assert_eq!(scene.curves[0].label.as_deref(), Some("arc"));
+        for (label, expected) in [
+            (r#""""#, "curves[0].label: must be 1 to 60 characters"),
+            ("3", "label"),
+        ] {
+            let text = format!(
+                r#"{{"space":"S2","curves":[{{"method":"geodesic","points":[[1,0,0],[0,1,0]],"label":{label}}}]}}"#
+            );
+            let e = Scene::from_json(&text).expect_err(label).to_string();
+            assert!(e.contains(expected), "{label}: {e}");
+        }
     }
 }

@@ -25,8 +25,8 @@ use spherekit::UnitQuat;
 use spherekit::glam::DVec3;
 use spherekit_render::{Camera, PALETTE, camera_of, render_built, turn_towards};
 use spherekit_scene::{
-    BuiltCurve, Document, EditError, SAMPLE_FIELDS, Scene, SceneError, Space, continuity_json,
-    registry_json,
+    BuiltCurve, Document, EditError, SAMPLE_FIELDS, SampleOptions, Scene, SceneError, Space,
+    continuity_json, registry_json,
 };
 use tiny_skia::Pixmap;
 use wasm_bindgen::prelude::*;
@@ -169,18 +169,38 @@ pub fn validate(scene: &str) -> Result<(), JsError> {
     Ok(())
 }
 
-/// Samples a scene: the JSON object `spherekit sample [--deriv]` prints (`t`, `points`, with
-/// `deriv` the derivatives and on S³ angular velocity and acceleration; `controls`,
-/// `auxiliary` and `info` — such as the Beta solver's iterations and residual — when the
-/// method has them).
+/// Samples a scene: the JSON object `spherekit sample [--deriv] [--frame F]` prints (`t`,
+/// `points`, with `deriv` the derivatives and on S³ angular velocity and acceleration, in the
+/// space frame or with `frame` `"body"` the body frame; `controls`, `auxiliary` and `info` —
+/// such as the Beta solver's iterations and residual — when the method has them).
 ///
 /// # Errors
 ///
-/// The CLI's message for a bad scene.
+/// The CLI's message for a bad scene; a frame other than `"space"` or `"body"`.
 #[wasm_bindgen]
-pub fn sample(scene: &str, deriv: bool) -> Result<String, JsError> {
+pub fn sample(scene: &str, deriv: bool, frame: Option<String>) -> Result<String, JsError> {
+    let body = body_frame(frame.as_deref())?;
     let (scene, curves) = load(scene).map_err(js)?;
-    Ok(scene.sample_json(&curves, deriv).to_string())
+    Ok(sampled(&scene, &curves, deriv, body))
+}
+
+fn body_frame(frame: Option<&str>) -> Result<bool, JsError> {
+    match frame {
+        None | Some("space") => Ok(false),
+        Some("body") => Ok(true),
+        Some(other) => Err(JsError::new(&format!(
+            "frame: \"{other}\" is not a frame: use space or body"
+        ))),
+    }
+}
+
+fn sampled(scene: &Scene, curves: &[BuiltCurve], deriv: bool, body_frame: bool) -> String {
+    let options = SampleOptions {
+        deriv,
+        body_frame,
+        ..SampleOptions::default()
+    };
+    scene.sample_json_with(curves, options).to_string()
 }
 
 /// One field of curve `curve`'s samples, flattened row by row into a `Float64Array`: `t`,
@@ -630,12 +650,13 @@ impl Playground {
     }
 
     /// The scene's samples, as [`sample`].
-    #[must_use]
-    pub fn sample(&self, deriv: bool) -> String {
-        self.doc
-            .scene()
-            .sample_json(self.doc.curves(), deriv)
-            .to_string()
+    ///
+    /// # Errors
+    ///
+    /// A frame other than `"space"` or `"body"`.
+    pub fn sample(&self, deriv: bool, frame: Option<String>) -> Result<String, JsError> {
+        let body = body_frame(frame.as_deref())?;
+        Ok(sampled(self.doc.scene(), self.doc.curves(), deriv, body))
     }
 
     /// One field of curve `curve`'s samples, as [`sample_array`], from the curves already built.

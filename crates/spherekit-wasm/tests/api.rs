@@ -43,7 +43,7 @@ fn methods_lists_every_method() {
 
 #[wasm_bindgen_test]
 fn sample_matches_the_cli_output() {
-    let out: serde_json::Value = serde_json::from_str(&sample(S2, false).unwrap()).unwrap();
+    let out: serde_json::Value = serde_json::from_str(&sample(S2, false, None).unwrap()).unwrap();
     let scene = spherekit_scene::Scene::from_json(S2).unwrap();
     assert_eq!(
         out,
@@ -86,7 +86,7 @@ fn bad_input_gives_the_cli_message() {
         "points[1] has zero length and cannot be normalised"
     );
     assert!(
-        message(sample("{", false).unwrap_err()).starts_with("invalid scene JSON: "),
+        message(sample("{", false, None).unwrap_err()).starts_with("invalid scene JSON: "),
         "JSON error"
     );
     assert!(
@@ -96,6 +96,36 @@ fn bad_input_gives_the_cli_message() {
     assert!(
         message(sample_array(S2, 4, "points").unwrap_err()).contains("curves[4]"),
         "curve index"
+    );
+}
+
+#[wasm_bindgen_test]
+fn sample_reports_body_frame_rates() {
+    let space: serde_json::Value =
+        serde_json::from_str(&sample(S3, true, Some("space".into())).unwrap()).unwrap();
+    let body: serde_json::Value =
+        serde_json::from_str(&sample(S3, true, Some("body".into())).unwrap()).unwrap();
+    // Same speed, other components (the keys turn about different axes).
+    let norm = |v: &serde_json::Value| {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap().powi(2))
+            .sum::<f64>()
+            .sqrt()
+    };
+    let (a, b) = (
+        &space["angular_velocity"][40],
+        &body["angular_velocity"][40],
+    );
+    assert!(
+        (norm(a) - norm(b)).abs() < 1e-12,
+        "|ω| is the same in both frames"
+    );
+    assert_ne!(a, b, "the components differ");
+    assert!(
+        message(sample(S3, true, Some("world".into())).unwrap_err()).starts_with("frame:"),
+        "a bad frame is named"
     );
 }
 

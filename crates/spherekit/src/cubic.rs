@@ -316,12 +316,8 @@ impl<P: Manifold> CubicSpline<P> {
 
         // Span coordinates of the keys, the directions and the clamped velocities.
         let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
-        let mut generators: Vec<P::Vector> = vectors.clone();
-        if let Some((s, e)) = &clamps {
-            generators.push(s.clone());
-            generators.push(e.clone());
-        }
-        let basis = span_basis(&generators);
+        let clamp_vectors = clamps.iter().flat_map(|(s, e)| [s, e]);
+        let basis = span_basis(vectors[0].dim(), vectors.iter().chain(clamp_vectors));
         let r = basis.len();
         let coords = |v: &P::Vector, out: &mut Vec<f64>| out.extend(basis.iter().map(|b| b.dot(v)));
         let mut xs = Vec::with_capacity(n * r);
@@ -333,7 +329,9 @@ impl<P: Manifold> CubicSpline<P> {
             coords(e, &mut es);
         }
         let m = r - 1;
-        let frames = Frames::new(&xs, &es, &thetas, r, closed);
+        // sin θ and cos θ of each segment, for the frame transport and the solver's scalars.
+        let sin_cos: Vec<(f64, f64)> = thetas.iter().map(|&t| math::sin_cos(t)).collect();
+        let frames = Frames::new(&xs, &es, &sin_cos, r, closed);
         let mut geo = Geometry {
             n,
             m,
@@ -344,7 +342,8 @@ impl<P: Manifold> CubicSpline<P> {
             fixed: None,
         };
         for i in 0..nseg {
-            geo.seg.push(SegConst::new(thetas[i], knots.width(i)));
+            geo.seg
+                .push(SegConst::new(thetas[i], knots.width(i), sin_cos[i]));
             for a in 0..m {
                 geo.ehat
                     .push(dot(frames.vector(i, a), &es[i * r..(i + 1) * r]));
@@ -388,9 +387,9 @@ impl<P: Manifold> CubicSpline<P> {
             )
         } else {
             match m {
-                1 => geo.solve(Fixed::<1>),
-                2 => geo.solve(Fixed::<2>),
-                3 => geo.solve(Fixed::<3>),
+                1 => FixedSolver::<1>::new(&geo).solve(),
+                2 => FixedSolver::<2>::new(&geo).solve(),
+                3 => FixedSolver::<3>::new(&geo).solve(),
                 _ => geo.solve(Dynamic(m)),
             }?
         };
@@ -645,8 +644,7 @@ fn kappa(x: f64) -> f64 {
 
 /// An orthonormal basis of the span of `vectors` (modified Gram–Schmidt, twice, on the
 /// normalised vectors; zero vectors are skipped).
-fn span_basis<V: Ambient>(vectors: &[V]) -> Vec<V> {
-    let dim = vectors[0].dim();
+fn span_basis<'a, V: Ambient + 'a>(dim: usize, vectors: impl IntoIterator<Item = &'a V>) -> Vec<V> {
     let mut basis: Vec<V> = Vec::with_capacity(dim);
     for p in vectors {
         if basis.len() == dim {
@@ -695,7 +693,7 @@ struct Frames {
 }
 
 impl Frames {
-    fn new(xs: &[f64], es: &[f64], thetas: &[f64], r: usize, closed: bool) -> Self {
+    fn new(xs: &[f64], es: &[f64], sin_cos: &[(f64, f64)], r: usize, closed: bool) -> Self {
         let m = r - 1;
         let n = xs.len() / r;
         let count = n + usize::from(closed);
@@ -714,23 +712,26 @@ impl Frames {
             }));
         }
         let mut e_end = vec![0.0; r];
+        let mut g = vec![0.0; r];
         for k in 0..count - 1 {
             let (x, e) = (&xs[k * r..(k + 1) * r], &es[k * r..(k + 1) * r]);
             let next = ((k + 1) % n) * r;
             let y = &xs[next..next + r];
-            let (sn, cs) = math::sin_cos(thetas[k]);
+            let (sn, cs) = sin_cos[k];
             for j in 0..r {
                 e_end[j] = -sn * x[j] + cs * e[j] - e[j];
             }
             for a in 0..m {
                 let f = &data[(k * m + a) * r..(k * m + a + 1) * r];
                 let fe = dot(f, e);
-                let mut g: Vec<f64> = f.iter().zip(&e_end).map(|(fj, dj)| fj + fe * dj).collect();
+                for ((gj, fj), dj) in g.iter_mut().zip(f).zip(&e_end) {
+                    *gj = fj + fe * dj;
+                }
                 let gy = dot(&g, y);
                 for (gj, yj) in g.iter_mut().zip(y) {
                     *gj -= gy * yj;
                 }
-                data.extend(g);
+                data.extend_from_slice(&g);
             }
         }
         Self { r, data }
@@ -775,35 +776,47 @@ struct SegConst {
     inv_sinc: f64,
     kappa: f64,
     dsinc: f64,
+    /// `2/h`, `4/h` and `6θ/h²`, the coefficients of the continuity equations.
+    c2: f64,
+    c4: f64,
+    c6: f64,
 }
 
 impl SegConst {
-    fn new(theta: f64, h: f64) -> Self {
+    /// The scalars of a segment of angle `theta` (`(sin θ, cos θ)` given) and width `h`.
+    fn new(theta: f64, h: f64, (sn, cs): (f64, f64)) -> Self {
+        if theta.abs() < 0.1 {
+            return Self {
+                theta,
+                h,
+                sinc: math::sinc(theta),
+                inv_sinc: math::inv_sinc(theta),
+                kappa: kappa(theta),
+                dsinc: sinc_deriv(theta),
+                c2: 2.0 / h,
+                c4: 4.0 / h,
+                c6: 6.0 * theta / (h * h),
+            };
+        }
+        // Above every series switch: the closed forms from the one `sin_cos`.
         Self {
             theta,
             h,
-            sinc: math::sinc(theta),
-            inv_sinc: math::inv_sinc(theta),
-            kappa: kappa(theta),
-            dsinc: sinc_deriv(theta),
+            sinc: sn / theta,
+            inv_sinc: theta / sn,
+            kappa: (theta - sn * cs) / (theta * theta),
+            dsinc: (theta * cs - sn) / (theta * theta),
+            c2: 2.0 / h,
+            c4: 4.0 / h,
+            c6: 6.0 * theta / (h * h),
         }
     }
 }
 
-/// A block dimension: a compile-time constant for the common small cases (so that the loops
-/// unroll), or a run-time value.
+/// A block dimension of the slice-based solver (tangent dimensions above 3; 1 to 3 use
+/// [`FixedSolver`]).
 trait Dim: Copy {
     fn get(self) -> usize;
-}
-
-#[derive(Clone, Copy)]
-struct Fixed<const D: usize>;
-
-impl<const D: usize> Dim for Fixed<D> {
-    #[inline(always)]
-    fn get(self) -> usize {
-        D
-    }
 }
 
 #[derive(Clone, Copy)]
@@ -1343,6 +1356,613 @@ impl Geometry {
     }
 }
 
+/// An m-vector and an m × m block (row-major) for a fixed tangent dimension.
+type Vf<const M: usize> = [f64; M];
+type Bf<const M: usize> = [[f64; M]; M];
+
+#[inline(always)]
+fn dotf<const M: usize>(a: &Vf<M>, b: &Vf<M>) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+#[inline(always)]
+fn normf<const M: usize>(a: &Vf<M>) -> f64 {
+    dotf(a, a).sqrt()
+}
+
+/// `x ← S x`, as [`apply_s`].
+#[inline(always)]
+fn apply_sf<const M: usize>(e: &Vf<M>, sigma: f64, x: &mut Vf<M>) {
+    let c = (1.0 - sigma) * dotf(e, x);
+    for (xi, ei) in x.iter_mut().zip(e) {
+        *xi = sigma * *xi + c * ei;
+    }
+}
+
+/// `T(u)` added to `y`, as [`add_t`].
+#[inline(always)]
+fn add_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, u: &Vf<M>, y: &mut Vf<M>) -> f64 {
+    let up = dotf(u, e);
+    let uu = dotf(u, u);
+    let perp2 = (uu - up * up).max(0.0);
+    let c1 = perp2 * sc.kappa;
+    let c2 = 2.0 * sc.dsinc * up;
+    let mut t2 = 0.0;
+    for ((ya, ua), ea) in y.iter_mut().zip(u).zip(e) {
+        let ta = c1 * ea + c2 * (ua - up * ea);
+        t2 += ta * ta;
+        *ya += ta;
+    }
+    t2.sqrt()
+}
+
+/// `scale·(σ·I + (1 − σ)·ê êᵀ)`, as [`s_matrix`].
+#[inline(always)]
+fn s_matrixf<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
+    let mut out = [[0.0; M]; M];
+    for i in 0..M {
+        for j in 0..M {
+            let id = if i == j { sigma } else { 0.0 };
+            out[i][j] = scale * (id + (1.0 - sigma) * e[i] * e[j]);
+        }
+    }
+    out
+}
+
+#[inline(always)]
+fn mat_mulf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
+    let mut out = [[0.0; M]; M];
+    for i in 0..M {
+        for j in 0..M {
+            let mut s = 0.0;
+            for l in 0..M {
+                s += a[i][l] * b[l][j];
+            }
+            out[i][j] = s;
+        }
+    }
+    out
+}
+
+/// `a·bᵀ`.
+#[inline(always)]
+fn mat_mul_tf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
+    let mut out = [[0.0; M]; M];
+    for i in 0..M {
+        for j in 0..M {
+            out[i][j] = (0..M).map(|l| a[i][l] * b[j][l]).sum();
+        }
+    }
+    out
+}
+
+#[inline(always)]
+fn mat_vecf<const M: usize>(a: &Bf<M>, x: &Vf<M>) -> Vf<M> {
+    let mut out = [0.0; M];
+    for i in 0..M {
+        let mut s = 0.0;
+        for l in 0..M {
+            s += a[i][l] * x[l];
+        }
+        out[i] = s;
+    }
+    out
+}
+
+/// `a⁻¹` for the pivot blocks of the Jacobian: the adjugate over the determinant for
+/// `M ≤ 3` (branch-free, one division; the blocks are diagonally dominant, and a less accurate
+/// inverse would only slow Newton's convergence, never change the residual it stops at), the
+/// elimination of [`invert`] otherwise; `None` if singular.
+#[inline(always)]
+fn invertf<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
+    let mut out = [[0.0; M]; M];
+    match M {
+        1 => {
+            out[0][0] = 1.0 / a[0][0];
+            return (a[0][0] != 0.0 && out[0][0].is_finite()).then_some(out);
+        }
+        2 => {
+            let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+            let r = 1.0 / det;
+            out[0][0] = a[1][1] * r;
+            out[0][1] = -a[0][1] * r;
+            out[1][0] = -a[1][0] * r;
+            out[1][1] = a[0][0] * r;
+            return (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite()))
+                .then_some(out);
+        }
+        3 => {
+            let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+            let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+            let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+            let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+            let r = 1.0 / det;
+            out[0][0] = c00 * r;
+            out[1][0] = c01 * r;
+            out[2][0] = c02 * r;
+            out[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * r;
+            out[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * r;
+            out[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * r;
+            out[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * r;
+            out[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * r;
+            out[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * r;
+            return (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite()))
+                .then_some(out);
+        }
+        _ => {}
+    }
+    invert_gj(a)
+}
+
+/// `a⁻¹` by the elimination of [`invert`]; `None` if singular.
+#[inline(always)]
+fn invert_gj<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
+    let mut w = *a;
+    let mut out = [[0.0; M]; M];
+    for (i, row) in out.iter_mut().enumerate() {
+        row[i] = 1.0;
+    }
+    for col in 0..M {
+        let piv = (col..M).fold(col, |p, r| {
+            if w[r][col].abs() > w[p][col].abs() {
+                r
+            } else {
+                p
+            }
+        });
+        let pv = w[piv][col];
+        if pv == 0.0 || !pv.is_finite() {
+            return None;
+        }
+        if piv != col {
+            w.swap(piv, col);
+            out.swap(piv, col);
+        }
+        let inv = 1.0 / pv;
+        for j in 0..M {
+            w[col][j] *= inv;
+            out[col][j] *= inv;
+        }
+        for r in 0..M {
+            if r != col {
+                let f = w[r][col];
+                if f != 0.0 {
+                    for j in 0..M {
+                        w[r][j] -= f * w[col][j];
+                        out[r][j] -= f * out[col][j];
+                    }
+                }
+            }
+        }
+    }
+    Some(out)
+}
+
+/// The solver for a fixed tangent dimension `M`: the continuity equations of [`Geometry`] with
+/// arrays for vectors and blocks, and a workspace allocated once per solve.
+struct FixedSolver<'g, const M: usize> {
+    g: &'g Geometry,
+    e: Vec<Vf<M>>,
+    hol: Bf<M>,
+    fixed: Option<(Vf<M>, Vf<M>)>,
+    /// `S⁻¹ H̃ᵀ x_{i+1}` per segment at the last residual's `x`.
+    w: Vec<Vf<M>>,
+    dinv: Vec<Bf<M>>,
+    l: Vec<Bf<M>>,
+    c: Vec<Bf<M>>,
+    /// Closed: the border column, `Zₖ`, `A_{n−1}`, `C_{n−1}`, the inverse Schur complement.
+    border: Vec<Bf<M>>,
+    z: Vec<Bf<M>>,
+    a_last: Bf<M>,
+    c_last: Bf<M>,
+    schur_inv: Bf<M>,
+}
+
+#[allow(
+    clippy::needless_range_loop,
+    reason = "element loops over the fixed-size blocks, indexed like the formulas"
+)]
+impl<'g, const M: usize> FixedSolver<'g, M> {
+    fn new(g: &'g Geometry) -> Self {
+        let arr = |s: &[f64]| -> Vf<M> { core::array::from_fn(|a| s[a]) };
+        let e = g.ehat.chunks_exact(M).map(arr).collect();
+        let mut hol = [[0.0; M]; M];
+        if g.closed {
+            for (a, row) in hol.iter_mut().enumerate() {
+                for (b, v) in row.iter_mut().enumerate() {
+                    *v = g.hol[a * M + b];
+                }
+            }
+        }
+        let fixed = g.fixed.as_ref().map(|(g0, g1)| (arr(g0), arr(g1)));
+        let n = g.n;
+        let zero = [[0.0; M]; M];
+        Self {
+            g,
+            e,
+            hol,
+            fixed,
+            w: vec![[0.0; M]; g.seg.len()],
+            dinv: vec![zero; n],
+            l: vec![zero; n],
+            c: vec![zero; n],
+            border: if g.closed { vec![zero; n] } else { Vec::new() },
+            z: if g.closed { vec![zero; n] } else { Vec::new() },
+            a_last: zero,
+            c_last: zero,
+            schur_inv: zero,
+        }
+    }
+
+    #[inline(always)]
+    fn fixed_row(&self, k: usize) -> Option<&Vf<M>> {
+        let (g0, g1) = self.fixed.as_ref()?;
+        if k == 0 {
+            Some(g0)
+        } else if k + 1 == self.g.n {
+            Some(g1)
+        } else {
+            None
+        }
+    }
+
+    /// `Hᵀ·y` across the seam, `y` otherwise.
+    #[inline(always)]
+    fn to_end(&self, seg: usize, y: &Vf<M>) -> Vf<M> {
+        if self.g.is_seam(seg) {
+            core::array::from_fn(|b| (0..M).map(|a| self.hol[a][b] * y[a]).sum())
+        } else {
+            *y
+        }
+    }
+
+    /// `H·y` across the seam, `y` otherwise.
+    #[inline(always)]
+    fn back(&self, seg: usize, y: &Vf<M>) -> Vf<M> {
+        if self.g.is_seam(seg) {
+            core::array::from_fn(|a| (0..M).map(|b| self.hol[a][b] * y[b]).sum())
+        } else {
+            *y
+        }
+    }
+
+    /// `S⁻¹ H̃ᵀ x_{seg+1}` (the end velocity of segment `seg` in its transported frame).
+    #[inline(always)]
+    fn end_velocity(&self, seg: usize, x: &[Vf<M>]) -> Vf<M> {
+        let j = if seg + 1 == self.g.n { 0 } else { seg + 1 };
+        let mut u = self.to_end(seg, &x[j]);
+        apply_sf(&self.e[seg], self.g.seg[seg].inv_sinc, &mut u);
+        u
+    }
+
+    /// [`Geometry::residual`] (the same arithmetic), also keeping the end velocities `w`.
+    fn residual(&mut self, x: &[Vf<M>], f: &mut [Vf<M>]) -> f64 {
+        let g = self.g;
+        let n = g.n;
+        let nseg = g.seg.len();
+        for i in 0..nseg {
+            self.w[i] = self.end_velocity(i, x);
+        }
+        let mut worst = 0.0_f64;
+        for k in 0..n {
+            let xk = &x[k];
+            let mut fk = [0.0; M];
+            let mut scale = 0.0;
+            if let Some(gk) = self.fixed_row(k) {
+                let c = if k == 0 { g.seg[0].c4 } else { g.seg[k - 1].c4 };
+                for a in 0..M {
+                    fk[a] = c * (xk[a] - gk[a]);
+                }
+                scale = c * (normf(xk) + normf(gk));
+            } else {
+                let nx = normf(xk);
+                if let Some(p) = g.prev(k) {
+                    let sc = &g.seg[p];
+                    let e = &self.e[p];
+                    let mut y = x[p];
+                    apply_sf(e, sc.sinc, &mut y);
+                    let c2 = sc.c2;
+                    let mut lin = 0.0;
+                    for ya in &mut y {
+                        *ya *= c2;
+                        lin += *ya * *ya;
+                    }
+                    let u = self.w[p];
+                    let tn = add_tf(sc, e, &u, &mut y);
+                    let c6 = sc.c6;
+                    for (ya, ea) in y.iter_mut().zip(e) {
+                        *ya -= c6 * ea;
+                    }
+                    let u = self.back(p, &y);
+                    let c4 = sc.c4;
+                    for a in 0..M {
+                        fk[a] += u[a] + c4 * xk[a];
+                    }
+                    scale += lin.sqrt() + tn + c6 + c4 * nx;
+                }
+                if let Some(nxs) = g.next(k) {
+                    let sc = &g.seg[nxs];
+                    let e = &self.e[nxs];
+                    let y = &self.w[nxs];
+                    let (c2, c4, c6) = (sc.c2, sc.c4, sc.c6);
+                    for a in 0..M {
+                        fk[a] += c2 * y[a] + c4 * xk[a] - c6 * e[a];
+                    }
+                    scale += c2 * normf(y) + c4 * nx + c6;
+                }
+            }
+            f[k] = fk;
+            // `worst = max(worst, |fₖ|/scale)`, with the square root and the division only for
+            // the rows that can raise it (the margin covers the rounding of the squares).
+            let fn2 = dotf(&fk, &fk);
+            if !fn2.is_finite() {
+                return f64::INFINITY;
+            }
+            if scale > 0.0 {
+                let bound = worst * scale;
+                if fn2 >= bound * bound * (1.0 - 1e-12) {
+                    worst = worst.max(fn2.sqrt() / scale);
+                }
+            } else if fn2 > 0.0 {
+                return f64::INFINITY;
+            }
+        }
+        worst
+    }
+
+    /// The A, D and C blocks of row `k` at the `x` of the last residual, as
+    /// [`Geometry::blocks`] and the C block of [`Geometry::factor`].
+    #[inline(always)]
+    fn blocks(&self, k: usize) -> (Bf<M>, Bf<M>, Bf<M>) {
+        let g = self.g;
+        let mut a_blk = [[0.0; M]; M];
+        let mut d_blk = [[0.0; M]; M];
+        let mut c_blk = [[0.0; M]; M];
+        if self.fixed_row(k).is_some() {
+            let c4 = if k == 0 { g.seg[0].c4 } else { g.seg[k - 1].c4 };
+            for (i, row) in d_blk.iter_mut().enumerate() {
+                row[i] = c4;
+            }
+            return (a_blk, d_blk, c_blk);
+        }
+        let mut diag = 0.0;
+        if let Some(p) = g.prev(k) {
+            let sc = &g.seg[p];
+            let e = &self.e[p];
+            diag += sc.c4;
+            let tmp = s_matrixf(e, sc.sinc, sc.c2);
+            a_blk = if g.is_seam(p) {
+                mat_mulf(&self.hol, &tmp)
+            } else {
+                tmp
+            };
+            let u = &self.w[p];
+            let up = dotf(u, e);
+            let w_perp: Vf<M> = core::array::from_fn(|i| u[i] - up * e[i]);
+            let (k1, sp, si) = (sc.kappa, sc.dsinc, sc.inv_sinc);
+            let mut tmp = [[0.0; M]; M];
+            for i in 0..M {
+                for j in 0..M {
+                    let id = if i == j { 1.0 } else { 0.0 };
+                    let dt = 2.0 * k1 * e[i] * w_perp[j]
+                        + 2.0 * sp * up * (id - e[i] * e[j])
+                        + 2.0 * sp * w_perp[i] * e[j];
+                    tmp[i][j] = si * dt + (1.0 - si) * 2.0 * sp * w_perp[i] * e[j];
+                }
+            }
+            if g.is_seam(p) {
+                let t2 = mat_mulf(&self.hol, &tmp);
+                let t3 = mat_mul_tf(&t2, &self.hol);
+                for i in 0..M {
+                    for j in 0..M {
+                        d_blk[i][j] += t3[i][j];
+                    }
+                }
+            } else {
+                for i in 0..M {
+                    for j in 0..M {
+                        d_blk[i][j] += tmp[i][j];
+                    }
+                }
+            }
+        }
+        if let Some(nx) = g.next(k) {
+            let sc = &g.seg[nx];
+            diag += sc.c4;
+            let tmp = s_matrixf(&self.e[nx], sc.inv_sinc, sc.c2);
+            c_blk = if g.is_seam(nx) {
+                mat_mul_tf(&tmp, &self.hol)
+            } else {
+                tmp
+            };
+        }
+        for (i, row) in d_blk.iter_mut().enumerate() {
+            row[i] += diag;
+        }
+        (a_blk, d_blk, c_blk)
+    }
+
+    /// The Jacobian at the `x` of the last residual, factorised as in [`Geometry::factor`];
+    /// `false` if a pivot block is singular.
+    fn factor(&mut self) -> bool {
+        let n = self.g.n;
+        let closed = self.g.closed;
+        let last = if closed { n - 1 } else { n };
+        let mut d_last = [[0.0; M]; M];
+        for k in 0..n {
+            let (a_blk, mut d_blk, mut c_blk) = self.blocks(k);
+            if k == last {
+                d_last = d_blk;
+                self.a_last = a_blk;
+                self.c_last = c_blk;
+                break;
+            }
+            if closed && k == 0 {
+                self.border[0] = a_blk;
+            }
+            if k > 0 {
+                let l = mat_mulf(&a_blk, &self.dinv[k - 1]);
+                self.l[k] = l;
+                let t = mat_mulf(&l, &self.c[k - 1]);
+                for i in 0..M {
+                    for j in 0..M {
+                        d_blk[i][j] -= t[i][j];
+                    }
+                }
+                if closed {
+                    let t = mat_mulf(&l, &self.border[k - 1]);
+                    for i in 0..M {
+                        for j in 0..M {
+                            self.border[k][i][j] -= t[i][j];
+                        }
+                    }
+                }
+            }
+            if closed && k + 2 == n {
+                for i in 0..M {
+                    for j in 0..M {
+                        self.border[k][i][j] += c_blk[i][j];
+                    }
+                }
+                c_blk = [[0.0; M]; M];
+            }
+            self.c[k] = c_blk;
+            match invertf(&d_blk) {
+                Some(inv) => self.dinv[k] = inv,
+                None => return false,
+            }
+        }
+        if closed {
+            for k in (0..n - 1).rev() {
+                let mut t = self.border[k];
+                if k + 2 < n {
+                    let s = mat_mulf(&self.c[k], &self.z[k + 1]);
+                    for i in 0..M {
+                        for j in 0..M {
+                            t[i][j] -= s[i][j];
+                        }
+                    }
+                }
+                self.z[k] = mat_mulf(&self.dinv[k], &t);
+            }
+            let t1 = mat_mulf(&self.a_last, &self.z[n - 2]);
+            let t2 = mat_mulf(&self.c_last, &self.z[0]);
+            for i in 0..M {
+                for j in 0..M {
+                    d_last[i][j] -= t1[i][j] + t2[i][j];
+                }
+            }
+            match invertf(&d_last) {
+                Some(inv) => self.schur_inv = inv,
+                None => return false,
+            }
+            // The border column is rebuilt by the next factorisation.
+            for b in &mut self.border {
+                *b = [[0.0; M]; M];
+            }
+        }
+        true
+    }
+
+    /// `x ← J⁻¹ x` with the factors, as [`Geometry::substitute`].
+    fn substitute(&self, x: &mut [Vf<M>]) {
+        let n = self.g.n;
+        let rows = if self.g.closed { n - 1 } else { n };
+        for k in 1..rows {
+            let t = mat_vecf(&self.l[k], &x[k - 1]);
+            for (xa, ta) in x[k].iter_mut().zip(&t) {
+                *xa -= ta;
+            }
+        }
+        for k in (0..rows).rev() {
+            if k + 1 < rows {
+                let t = mat_vecf(&self.c[k], &x[k + 1]);
+                for (xa, ta) in x[k].iter_mut().zip(&t) {
+                    *xa -= ta;
+                }
+            }
+            x[k] = mat_vecf(&self.dinv[k], &x[k]);
+        }
+        if self.g.closed {
+            let mut rhs = x[n - 1];
+            let t = mat_vecf(&self.a_last, &x[n - 2]);
+            for (r, ta) in rhs.iter_mut().zip(&t) {
+                *r -= ta;
+            }
+            let t = mat_vecf(&self.c_last, &x[0]);
+            for (r, ta) in rhs.iter_mut().zip(&t) {
+                *r -= ta;
+            }
+            let last = mat_vecf(&self.schur_inv, &rhs);
+            for k in 0..n - 1 {
+                let t = mat_vecf(&self.z[k], &last);
+                for (xa, ta) in x[k].iter_mut().zip(&t) {
+                    *xa -= ta;
+                }
+            }
+            x[n - 1] = last;
+        }
+    }
+
+    /// [`Geometry::solve`] for the fixed dimension.
+    fn solve(mut self) -> Result<(Vec<f64>, CubicSolveInfo), SplineError> {
+        let n = self.g.n;
+        let mut x = vec![[0.0; M]; n];
+        let mut f = vec![[0.0; M]; n];
+        let mut residual = self.residual(&x, &mut f);
+        let mut info = CubicSolveInfo {
+            iterations: 0,
+            factorizations: 0,
+            residual,
+        };
+        let fail = |info: CubicSolveInfo| {
+            SplineError::Solve(SolveError::NoConvergence {
+                iterations: info.iterations,
+                residual: info.residual,
+            })
+        };
+        let mut factored = false;
+        let mut fresh = false;
+        while residual > TARGET_RESIDUAL && info.iterations < MAX_ITERATIONS {
+            if !factored {
+                if !self.factor() {
+                    return Err(fail(info));
+                }
+                factored = true;
+                info.factorizations += 1;
+                fresh = true;
+            }
+            self.substitute(&mut f);
+            for (xa, fa) in x.iter_mut().zip(&f) {
+                for (xi, fi) in xa.iter_mut().zip(fa) {
+                    *xi -= fi;
+                }
+            }
+            info.iterations += 1;
+            let new = self.residual(&x, &mut f);
+            info.residual = new;
+            if !new.is_finite() {
+                return Err(fail(info));
+            }
+            if new >= residual && fresh {
+                residual = new;
+                break;
+            }
+            if info.iterations == 1 || new > 0.1 * residual {
+                factored = false;
+            }
+            fresh = false;
+            residual = new;
+        }
+        info.residual = residual;
+        let flat: Vec<f64> = x.iter().flatten().copied().collect();
+        if residual.is_nan() || residual > MAX_RESIDUAL || flat.iter().any(|v| !v.is_finite()) {
+            return Err(fail(info));
+        }
+        Ok((flat, info))
+    }
+}
+
 /// `T(u)` added to `y` (both m-vectors in segment coordinates); returns `|T(u)|`.
 fn add_t(sc: &SegConst, e: &[f64], u: &[f64], y: &mut [f64]) -> f64 {
     let up = dot(u, e);
@@ -1471,9 +2091,22 @@ mod tests {
     fn invert_roundtrip() {
         let a = [4.0, 1.0, 0.5, 1.0, 3.0, 0.2, 0.1, 0.3, 2.0];
         let mut inv = [0.0; 9];
-        assert!(invert(Fixed::<3>, &a, &mut inv), "invertible");
+        assert!(invert(Dynamic(3), &a, &mut inv), "invertible");
         let mut id = [0.0; 9];
-        mat_mul(Fixed::<3>, &a, &inv, &mut id);
+        mat_mul(Dynamic(3), &a, &inv, &mut id);
+        // The fixed-size elimination is the same one.
+        let rows = [[a[0], a[1], a[2]], [a[3], a[4], a[5]], [a[6], a[7], a[8]]];
+        let inv_f = invert_gj(&rows).expect("invertible");
+        assert_eq!(inv_f.concat(), inv.to_vec(), "invert_gj = invert");
+        let adj = invertf(&rows).expect("invertible");
+        for (x, y) in adj.concat().iter().zip(&inv) {
+            assert!((x - y).abs() < 1e-15, "adjugate {x} vs {y}");
+        }
+        assert!(
+            invertf(&[[1.0, 2.0], [2.0, 4.0]]).is_none(),
+            "singular 2 × 2"
+        );
+        assert!(invertf(&[[0.0]]).is_none(), "singular 1 × 1");
         for i in 0..3 {
             for j in 0..3 {
                 let e = if i == j { 1.0 } else { 0.0 };

@@ -1,10 +1,10 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Robustness checks and the generator of valid-but-extreme scenes, shared by
-//! `tests/robustness.rs`, `tests/robust_properties.rs` (arbtest, stable CI) and the cargo-fuzz
-//! targets in `fuzz/` (which include this file by path). The including module must provide
-//! `arb`, the `arbitrary` crate (`use arbtest::arbitrary as arb;` or `use arbitrary as arb;`).
+//! Robustness checks and the generator of valid-but-extreme scenes, shared by the test modules
+//! `tests/it/robustness.rs` and `tests/it/robust_properties.rs` (arbtest, stable CI; declared once
+//! in `tests/it/main.rs`) and the cargo-fuzz targets in `fuzz/` (which include this file by
+//! path). The including module must provide `arb`, the `arbitrary` crate (`use arbtest::arbitrary as arb;` or `use arbitrary as arb;`).
 
 #![allow(
     dead_code,

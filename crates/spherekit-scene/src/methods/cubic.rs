@@ -39,16 +39,14 @@ pub(crate) static METHOD: Method = Method {
             "with end \"clamped\": S3 the angular velocity [x, y, z] at the first key (in params.frame), elsewhere a tangent vector there",
             [0.0; 3],
         )
-        .with_kind(ParamKind::Vector)
-        .advanced(),
+        .with_kind(ParamKind::Vector),
         Param::number(
             "end_velocity",
             "end velocity",
             "with end \"clamped\": the same at the last key",
             [0.0; 3],
         )
-        .with_kind(ParamKind::Vector)
-        .advanced(),
+        .with_kind(ParamKind::Vector),
         Param::number(
             "frame",
             "frame",

@@ -3,17 +3,21 @@
 
 //! Batch evaluation (`Curve::eval_many`, `Curve::jet_many`) agrees with one-at-a-time
 //! evaluation bit for bit, for every registered method, parameter choice and sphere, at
-//! sorted, unsorted and out-of-domain parameters.
+//! sorted, unsorted and out-of-domain parameters, at and beside the joints.
 
 use spherekit::{Ambient, Manifold};
 use spherekit_scene::{Built, BuiltCurve};
 
 use crate::support::cases;
 
-fn parameters([t0, t1]: [f64; 2]) -> Vec<f64> {
+fn parameters([t0, t1]: [f64; 2], joints: &[f64]) -> Vec<f64> {
     let mut ts: Vec<f64> = (0..=200)
         .map(|i| t0 + (t1 - t0) * f64::from(i) / 200.0)
         .collect();
+    // At and beside the joints.
+    for &t in joints {
+        ts.extend([t.next_down(), t, t.next_up()]);
+    }
     // Unsorted, repeated and outside the domain.
     ts.extend([
         t1,
@@ -30,7 +34,7 @@ fn parameters([t0, t1]: [f64; 2]) -> Vec<f64> {
 
 fn check<P: Manifold>(name: &str, b: &Built<P>) -> Result<(), String> {
     let c = &*b.curve;
-    let ts = parameters(c.domain());
+    let ts = parameters(c.domain(), c.joints());
     let mut points = vec![c.eval(ts[0]); ts.len()];
     let mut jets = vec![c.jet(ts[0]); ts.len()];
     c.eval_many(&ts, &mut points);

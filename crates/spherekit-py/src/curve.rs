@@ -1,0 +1,497 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! `spherekit.Curve`: any registered method on any sphere, built through the scene format.
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use serde_json::{Map, Value, json};
+use spherekit::{Curve, Jet, S2Point, SnPoint, UnitQuat};
+use spherekit_scene::{Built, BuiltCurve, Scene, ScenePoint, continuity_json};
+
+use crate::convert::{Times, from_json, point_rows, rows, to_json, value_error};
+
+/// How many parameters one `eval_many`/`jet_many` call gets: the buffers stay in cache.
+const CHUNK: usize = 1024;
+
+/// What to evaluate at each parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum What {
+    Point,
+    Velocity,
+    Acceleration,
+    /// S³: the angular velocity, in the body frame when `true`.
+    AngularVelocity(bool),
+    /// S³: the angular acceleration, in the body frame when `true`.
+    AngularAcceleration(bool),
+}
+
+impl What {
+    /// `curve(t, order)`.
+    pub(crate) fn from_order(order: i64) -> PyResult<Self> {
+        match order {
+            0 => Ok(Self::Point),
+            1 => Ok(Self::Velocity),
+            2 => Ok(Self::Acceleration),
+            _ => Err(value_error("`order` must be 0, 1 or 2.")),
+        }
+    }
+}
+
+/// `"space"` or `"body"`: whether the frame is the body's.
+pub(crate) fn body_frame(frame: &str) -> PyResult<bool> {
+    match frame {
+        "space" => Ok(false),
+        "body" => Ok(true),
+        _ => Err(value_error(format!(
+            "frame: \"{frame}\" is not a frame: use \"space\" or \"body\""
+        ))),
+    }
+}
+
+/// A sphere's points and vectors written as rows of numbers.
+pub(crate) trait Flat: ScenePoint {
+    fn put_point(&self, scalar_first: bool, out: &mut Vec<f64>);
+    fn put_vector(v: &Self::Vector, scalar_first: bool, out: &mut Vec<f64>);
+}
+
+impl Flat for S2Point {
+    fn put_point(&self, _: bool, out: &mut Vec<f64>) {
+        out.extend_from_slice(&self.as_dvec3().to_array());
+    }
+    fn put_vector(v: &spherekit::glam::DVec3, _: bool, out: &mut Vec<f64>) {
+        out.extend_from_slice(&v.to_array());
+    }
+}
+
+impl Flat for UnitQuat {
+    fn put_point(&self, scalar_first: bool, out: &mut Vec<f64>) {
+        Self::put_vector(&spherekit::Manifold::to_vector(self), scalar_first, out);
+    }
+    fn put_vector(v: &spherekit::glam::DVec4, scalar_first: bool, out: &mut Vec<f64>) {
+        if scalar_first {
+            out.extend_from_slice(&[v.w, v.x, v.y, v.z]);
+        } else {
+            out.extend_from_slice(&v.to_array());
+        }
+    }
+}
+
+impl Flat for SnPoint {
+    fn put_point(&self, _: bool, out: &mut Vec<f64>) {
+        out.extend_from_slice(self.coords());
+    }
+    fn put_vector(v: &spherekit::VecN, _: bool, out: &mut Vec<f64>) {
+        out.extend_from_slice(v.as_slice());
+    }
+}
+
+/// Below this many parameters a batch is evaluated on the calling thread only.
+const PARALLEL_MIN: usize = 32_768;
+
+/// The threads a large batch is split over: `SPHEREKIT_THREADS` if set (1 turns the splitting
+/// off; read at every batch), else the available parallelism, at most 8.
+fn threads() -> usize {
+    static AVAILABLE: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    std::env::var("SPHEREKIT_THREADS")
+        .ok()
+        .and_then(|v| v.parse::<usize>().ok())
+        .unwrap_or_else(|| {
+            *AVAILABLE.get_or_init(|| {
+                std::thread::available_parallelism()
+                    .map_or(1, usize::from)
+                    .min(8)
+            })
+        })
+        .max(1)
+}
+
+/// Evaluates `what` at every parameter into rows (`width` numbers each). NaN parameters give
+/// rows of NaN (the library's curves are not evaluated at NaN). Large batches are split into
+/// contiguous parts evaluated on scoped threads (see [`threads`]); the values are the same
+/// as on one thread, bit for bit.
+pub(crate) fn evaluate<P: Flat>(
+    curve: &(dyn Curve<Point = P> + Send + Sync),
+    ts: &[f64],
+    what: What,
+    width: usize,
+    scalar_first: bool,
+) -> Vec<f64> {
+    let parts = threads().min(ts.len() / (PARALLEL_MIN / 2)).max(1);
+    if parts == 1 {
+        return evaluate_serial(curve, ts, what, width, scalar_first);
+    }
+    let size = ts.len().div_ceil(parts);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = ts
+            .chunks(size)
+            .map(|part| {
+                scope.spawn(move || evaluate_serial(curve, part, what, width, scalar_first))
+            })
+            .collect();
+        let mut out = Vec::with_capacity(ts.len() * width);
+        for h in handles {
+            // A panic in a part is re-raised here (pyo3 turns it into a Python exception).
+            out.extend_from_slice(&h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
+        }
+        out
+    })
+}
+
+fn evaluate_serial<P: Flat>(
+    curve: &(dyn Curve<Point = P> + Send + Sync),
+    ts: &[f64],
+    what: What,
+    width: usize,
+    scalar_first: bool,
+) -> Vec<f64> {
+    let t0 = curve.domain()[0];
+    let mut out = Vec::with_capacity(ts.len() * width);
+    let mut clean = Vec::new();
+    let n = ts.len().min(CHUNK);
+    let mut points = Vec::new();
+    let mut jets: Vec<Jet<P>> = Vec::new();
+    if what == What::Point {
+        points = vec![curve.eval(t0); n];
+    } else {
+        jets = vec![curve.jet(t0); n];
+    }
+    for chunk in ts.chunks(CHUNK) {
+        let chunk = if chunk.iter().any(|t| t.is_nan()) {
+            clean.clear();
+            clean.extend(chunk.iter().map(|&t| if t.is_nan() { t0 } else { t }));
+            clean.as_slice()
+        } else {
+            chunk
+        };
+        if what == What::Point {
+            let ps = &mut points[..chunk.len()];
+            curve.eval_many(chunk, ps);
+            for p in ps.iter() {
+                p.put_point(scalar_first, &mut out);
+            }
+        } else {
+            let js = &mut jets[..chunk.len()];
+            curve.jet_many(chunk, js);
+            put_jets(js, what, scalar_first, &mut out);
+        }
+    }
+    for (k, t) in ts.iter().enumerate() {
+        if t.is_nan() {
+            out[k * width..(k + 1) * width].fill(f64::NAN);
+        }
+    }
+    out
+}
+
+/// The rows of `what` for these jets.
+pub(crate) fn put_jets<P: Flat>(
+    jets: &[Jet<P>],
+    what: What,
+    scalar_first: bool,
+    out: &mut Vec<f64>,
+) {
+    for jet in jets {
+        match what {
+            What::Point => jet.point.put_point(scalar_first, out),
+            What::Velocity => P::put_vector(&jet.velocity, scalar_first, out),
+            What::Acceleration => P::put_vector(&jet.acceleration, scalar_first, out),
+            What::AngularVelocity(body) => {
+                if let Some((w, _)) = P::angular(jet, body) {
+                    out.extend_from_slice(&w);
+                }
+            }
+            What::AngularAcceleration(body) => {
+                if let Some((_, a)) = P::angular(jet, body) {
+                    out.extend_from_slice(&a);
+                }
+            }
+        }
+    }
+}
+
+/// A curve of any registered method on any sphere, evaluated from numpy arrays.
+///
+/// `Curve(method, points, *, space=None, knots=None, closed=False, scalar_first=False,
+/// canonicalize=None, **params)` builds the curve a scene `{"space", "method", "points",
+/// "knots", "closed", "canonicalize", "params"}` describes (see `spherekit.methods()` for the
+/// methods and their parameters), with the CLI's validation and error messages.
+///
+/// - `points`: an `(n, d)` array. The sphere is inferred from `d` (3: S2, 4: S3 quaternions,
+///   otherwise S(d-1)) unless `space` ("S2", "S3", "S<m>") is given. Quaternions are
+///   scalar-last `[x, y, z, w]` as in scipy, or `[w, x, y, z]` with `scalar_first=True`; the
+///   same order is used for the points, velocities and accelerations returned.
+/// - `knots`: the parameter of each point (methods that take knots), strictly increasing.
+/// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`…).
+///
+/// `curve(t)` gives the points at the parameters `t` (a number or a 1-D array), `curve(t, 1)`
+/// and `curve(t, 2)` the first and second derivatives (ambient vectors). Parameters outside
+/// `domain` are clamped to it (the library's domain policy: no extrapolation). NaN gives NaN.
+///
+/// ```python
+/// >>> import numpy as np, spherekit
+/// >>> c = spherekit.Curve("geodesic", [[1, 0, 0], [0, 1, 0]])
+/// >>> c.domain
+/// (0.0, 1.0)
+/// >>> np.round(c(0.5), 6).tolist()
+/// [0.707107, 0.707107, 0.0]
+/// >>> c([0.0, 1.0], 1).shape
+/// (2, 3)
+///
+/// ```
+#[pyclass(module = "spherekit._spherekit", name = "Curve", frozen)]
+pub(crate) struct PyCurve {
+    built: BuiltCurve,
+    method: &'static str,
+    space: String,
+    width: usize,
+    scalar_first: bool,
+}
+
+/// Calls `f` with the `Built` of whatever sphere the curve is on.
+macro_rules! with_built {
+    ($curve:expr, |$b:ident| $body:expr) => {
+        match &$curve.built {
+            BuiltCurve::S2($b) => $body,
+            BuiltCurve::S3($b) => $body,
+            BuiltCurve::Sn($b) => $body,
+        }
+    };
+}
+
+impl PyCurve {
+    fn rows_of<'py, P: Flat>(
+        &self,
+        py: Python<'py>,
+        ps: &[P],
+    ) -> PyResult<Option<Bound<'py, PyAny>>> {
+        if ps.is_empty() {
+            return Ok(None);
+        }
+        let mut out = Vec::with_capacity(ps.len() * self.width);
+        for p in ps {
+            p.put_point(self.scalar_first, &mut out);
+        }
+        rows(py, out, self.width, false).map(Some)
+    }
+
+    fn run<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        what: What,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let times = Times::extract(t, "t")?;
+        let ts = times.values();
+        let width = match what {
+            What::AngularVelocity(_) | What::AngularAcceleration(_) => 3,
+            _ => self.width,
+        };
+        let scalar_first = self.scalar_first;
+        let data = py.detach(|| {
+            with_built!(self, |b| evaluate(
+                &*b.curve,
+                &ts,
+                what,
+                width,
+                scalar_first
+            ))
+        });
+        rows(py, data, width, times.scalar)
+    }
+
+    fn angular<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        frame: &str,
+        acceleration: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let body = body_frame(frame)?;
+        if !matches!(self.built, BuiltCurve::S3(_)) {
+            return Err(value_error(format!(
+                "angular rates are defined on S3 (rotations), this curve is on {}",
+                self.space
+            )));
+        }
+        let what = if acceleration {
+            What::AngularAcceleration(body)
+        } else {
+            What::AngularVelocity(body)
+        };
+        self.run(py, t, what)
+    }
+}
+
+#[pymethods]
+impl PyCurve {
+    #[new]
+    #[pyo3(signature = (method, points, *, space=None, knots=None, closed=false, scalar_first=false, canonicalize=None, **params))]
+    #[expect(clippy::too_many_arguments, reason = "the Python signature")]
+    fn new(
+        py: Python<'_>,
+        method: &str,
+        points: &Bound<'_, PyAny>,
+        space: Option<&str>,
+        knots: Option<&Bound<'_, PyAny>>,
+        closed: bool,
+        scalar_first: bool,
+        canonicalize: Option<bool>,
+        params: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Self> {
+        let mut rows = point_rows(points, "points")?;
+        let width = rows.first().map_or(0, Vec::len);
+        let space = match space {
+            Some(s) => s.to_owned(),
+            None => match width {
+                3 => "S2".to_owned(),
+                0 => return Err(value_error("points: must have at least one point")),
+                d => format!("S{}", d - 1),
+            },
+        };
+        // The scene format's quaternions are [w, x, y, z].
+        if space == "S3" && !scalar_first {
+            for r in &mut rows {
+                if let &mut [x, y, z, w] = r.as_mut_slice() {
+                    *r = vec![w, x, y, z];
+                }
+            }
+        }
+        let mut scene = Map::new();
+        scene.insert("space".into(), json!(space));
+        scene.insert("method".into(), json!(method));
+        scene.insert("points".into(), json!(rows));
+        if let Some(k) = knots {
+            scene.insert("knots".into(), json!(crate::convert::numbers(k, "knots")?));
+        }
+        if closed {
+            scene.insert("closed".into(), json!(true));
+        }
+        if let Some(c) = canonicalize {
+            scene.insert("canonicalize".into(), json!(c));
+        }
+        if let Some(p) = params
+            && !p.is_empty()
+        {
+            scene.insert("params".into(), to_json(p.as_any(), 0)?);
+        }
+        let text = Value::Object(scene).to_string();
+        let scene = Scene::from_json(&text).map_err(|e| value_error(e.to_string()))?;
+        let mut built = py
+            .detach(|| scene.build())
+            .map_err(|e| value_error(e.to_string()))?;
+        let built = built.remove(0);
+        Ok(Self {
+            built,
+            method: scene.curves[0].method.id,
+            space: scene.space.name(),
+            width,
+            scalar_first,
+        })
+    }
+
+    /// The points (`order=0`), velocities (1) or accelerations (2) at the parameters `t`.
+    #[pyo3(signature = (t, order=0))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        order: i64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.run(py, t, What::from_order(order)?)
+    }
+
+    /// S3: the angular velocity `(m, 3)` at `t`, in the space frame (`ω = 2q′q̄`) or the body
+    /// frame (`2q̄q′`, scipy's `RotationSpline(t, 1)`).
+    #[pyo3(signature = (t, frame="space"))]
+    fn angular_velocity<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        frame: &str,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.angular(py, t, frame, false)
+    }
+
+    /// S3: the angular acceleration `(m, 3)` at `t`, in the space or the body frame.
+    #[pyo3(signature = (t, frame="space"))]
+    fn angular_acceleration<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        frame: &str,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.angular(py, t, frame, true)
+    }
+
+    /// The parameter interval `(t0, t1)`.
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        let [a, b] = self.built.domain();
+        (a, b)
+    }
+
+    /// The parameters where the curve's pieces meet, both ends included.
+    #[getter]
+    fn joints<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let joints = with_built!(self, |b| b.curve.joints().to_vec());
+        rows(py, joints, 1, true)
+    }
+
+    /// The method id (`"squad"`).
+    #[getter]
+    fn method(&self) -> &'static str {
+        self.method
+    }
+
+    /// The sphere: `"S2"`, `"S3"` or `"S<m>"`.
+    #[getter]
+    fn space(&self) -> String {
+        self.space.clone()
+    }
+
+    /// The input points as the curve uses them: normalised, and on S3 canonicalised (consecutive
+    /// quaternions with non-negative dot products) unless `canonicalize=False`.
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        with_built!(self, |b| self.rows_of(py, &b.inputs))
+    }
+
+    /// The derived control points, `None` when the method has none.
+    #[getter]
+    fn controls<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        with_built!(self, |b| self.rows_of(py, &b.controls))
+    }
+
+    /// The auxiliary vertices a method solves for (Beta, Gamma), `None` when it has none.
+    #[getter]
+    fn auxiliary<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        with_built!(self, |b| self.rows_of(py, &b.auxiliary))
+    }
+
+    /// Method-specific facts (solver iterations, computed knots…), a dict, empty when none.
+    #[getter]
+    fn info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let info = with_built!(self, |b| info_of(b));
+        from_json(py, &Value::Object(info))
+    }
+
+    /// The jumps at each interior joint, as `spherekit sample --continuity` reports them:
+    /// a list of `{"t", "c0", "c1", "c2", "g1", "class"}`.
+    fn continuity<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (report, order) = py.detach(|| self.built.continuity());
+        from_json(py, &continuity_json(&report, order))
+    }
+
+    fn __repr__(&self) -> String {
+        let [a, b] = self.built.domain();
+        format!(
+            "spherekit.Curve({:?} on {}, domain [{a}, {b}])",
+            self.method, self.space
+        )
+    }
+}
+
+fn info_of<P: ScenePoint>(b: &Built<P>) -> Map<String, Value> {
+    b.info.clone()
+}

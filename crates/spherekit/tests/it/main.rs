@@ -1,0 +1,27 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! The integration tests of `spherekit`, one module per subject, linked as one test binary
+//! (one link instead of one per file). The batch-evaluation and allocation checks of every
+//! method live with the registry, in `crates/spherekit-scene/tests/`.
+
+mod support;
+
+mod arclength;
+mod beta_spline;
+mod bezier;
+mod catmull_rom;
+mod classic_stress;
+mod continuity;
+mod cubic;
+mod extrapolate;
+mod gamma_spline;
+mod geodesic;
+mod kim;
+mod long_sequences;
+mod manifold;
+mod pobegailo_misprints;
+mod pobegailo_s2;
+mod pobegailo_s3;
+mod rotation;
+mod squad;

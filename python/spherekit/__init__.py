@@ -1,0 +1,36 @@
+# Copyright 2026 the Spherekit Authors
+# SPDX-License-Identifier: Apache-2.0 OR MIT
+"""Spline curves on spheres from numpy: S2, unit quaternions (S3) and S^m.
+
+Every curve is built and evaluated by the Rust crates of spherekit; this package is a thin
+layer over them.
+
+- :class:`Curve` — any registered method (``spherekit.methods()``) on any sphere.
+- :class:`RotationSpline`, :class:`Slerp` — drop-ins for ``scipy.spatial.transform``'s
+  classes of the same names (scipy is optional: without it, rotations are ``(n, 4)``
+  scalar-last quaternion arrays).
+- :func:`sample`, :func:`render`, :func:`render_png` — whole JSON scenes, as the
+  ``spherekit`` CLI takes them; :func:`methods` — the method registry.
+
+Bad input raises ``ValueError`` with the CLI's one-line message.
+
+>>> import numpy as np, spherekit
+>>> c = spherekit.Curve("squad", [[0, 0, 0, 1], [0, 0, 0.3826834, 0.9238795], [0.5, 0.5, 0, 0.7071068]])
+>>> c.space, c.domain
+('S3', (0.0, 2.0))
+>>> c.angular_velocity([0.5, 1.5], frame="body").shape
+(2, 3)
+"""
+
+from ._spherekit import Curve, methods, render, render_png, sample
+from ._scipy import RotationSpline, Slerp
+
+__all__ = [
+    "Curve",
+    "RotationSpline",
+    "Slerp",
+    "methods",
+    "render",
+    "render_png",
+    "sample",
+]

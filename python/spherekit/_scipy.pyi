@@ -1,0 +1,33 @@
+# Type stubs of the scipy drop-ins.
+from typing import Any, Literal, Optional, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+_Times = Union[float, npt.ArrayLike]
+
+class RotationSpline:
+    times: npt.NDArray[np.float64]
+    rotations: Any
+    def __init__(
+        self,
+        times: npt.ArrayLike,
+        rotations: Any,
+        *,
+        end: Optional[Literal["scipy", "natural", "clamped"]] = None,
+        closed: bool = False,
+        start_rate: Optional[npt.ArrayLike] = None,
+        end_rate: Optional[npt.ArrayLike] = None,
+    ) -> None: ...
+    @overload
+    def __call__(self, times: _Times) -> Any: ...
+    @overload
+    def __call__(self, times: _Times, order: Literal[0]) -> Any: ...
+    @overload
+    def __call__(self, times: _Times, order: Literal[1, 2]) -> npt.NDArray[np.float64]: ...
+
+class Slerp:
+    times: npt.NDArray[np.float64]
+    timedelta: npt.NDArray[np.float64]
+    def __init__(self, times: npt.ArrayLike, rotations: Any) -> None: ...
+    def __call__(self, times: _Times) -> Any: ...

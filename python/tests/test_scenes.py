@@ -1,0 +1,70 @@
+# Copyright 2026 the Spherekit Authors
+# SPDX-License-Identifier: Apache-2.0 OR MIT
+"""Whole scenes: the malformed-scene catalogue, `render`, `render_png`, `methods`."""
+
+import glob
+import json
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import spherekit
+from conftest import REPO
+
+BAD = sorted(glob.glob(os.path.join(REPO, "tests", "robustness", "bad", "*.json")))
+
+
+def test_the_catalogue_is_there():
+    assert len(BAD) >= 80
+
+
+@pytest.mark.parametrize("path", BAD, ids=os.path.basename)
+def test_every_bad_scene_is_a_value_error(path):
+    data = open(path, "rb").read()
+    want = open(path[: -len(".json")] + ".txt").read().strip()
+    # `view` is read by the renderer only (files named render_*), as in the CLI's test.
+    calls = [lambda: spherekit.render(data, size=16)]
+    if not os.path.basename(path).startswith("render_"):
+        calls.append(lambda: spherekit.sample(data, deriv=True))
+    for call in calls:
+        with pytest.raises(ValueError) as e:
+            call()
+        message = str(e.value)
+        assert want in message and "\n" not in message, (message, want)
+
+
+def test_sample_takes_dicts_text_and_paths(tmp_path):
+    scene = {"space": "S2", "method": "geodesic", "points": [[1, 0, 0], [0, 1, 0]], "samples": 5}
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(scene))
+    a = spherekit.sample(scene)
+    assert a == spherekit.sample(json.dumps(scene)) == spherekit.sample(path)
+    assert a["t"] == [0.0, 0.25, 0.5, 0.75, 1.0] and a["method"] == "geodesic"
+    assert spherekit.sample(scene, samples=3)["t"] == [0.0, 0.5, 1.0]
+    out = spherekit.sample(dict(scene, space="S3", points=[[1, 0, 0, 0], [0, 1, 0, 0]]), deriv=True, frame="body")
+    assert len(out["angular_velocity"]) == 5
+    with pytest.raises(ValueError, match="cannot read scene file"):
+        spherekit.sample(pathlib.Path(tmp_path / "missing.json"))
+    with pytest.raises(ValueError, match="samples"):
+        spherekit.sample(scene, samples=1)
+
+
+def test_render_and_png(tmp_path):
+    scene = os.path.join(REPO, "tests", "golden", "squad_s3.json")
+    img = spherekit.render(pathlib.Path(scene), size=96)
+    assert img.dtype == np.uint8 and img.ndim == 3 and img.shape[1:] == (96, 4)
+    assert img[..., 3].min() == 255 and img[..., :3].std() > 0
+    out = tmp_path / "squad.png"
+    spherekit.render_png(pathlib.Path(scene), out, size=96)
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(ValueError, match="size"):
+        spherekit.render(pathlib.Path(scene), size=-1)
+
+
+def test_methods_is_the_registry():
+    methods = spherekit.methods()
+    ids = [m["id"] for m in methods]
+    assert "cubic" in ids and "squad" in ids and len(ids) == len(set(ids))
+    assert all({"id", "spaces", "min_points", "params"} <= m.keys() for m in methods)

@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+# Copyright 2026 the Spherekit Authors
+# SPDX-License-Identifier: Apache-2.0 OR MIT
+"""Subsets DejaVu Sans to the characters the renderer draws and writes its outlines.
+
+    python3 scripts/font_subset.py [/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf]
+
+Needs fontTools (`pip install fonttools` into a venv) and Debian's fonts-dejavu-core. Writes
+
+- crates/spherekit-render/fonts/DejaVuSans-subset.ttf: the subset font (Bitstream Vera
+  licence with DejaVu's public-domain changes, see LICENSE-DejaVu next to it);
+- crates/spherekit-render/fonts/glyphs.bin: the same outlines in the renderer's format, which
+  the renderer embeds (so that it needs no font parser):
+
+      "SKF2", u16 units per em, i16 ascender, i16 descender, u16 glyph count,
+      count × (u32 code point, u16 advance, u32 offset, u16 length), sorted by code point
+      (little-endian), then each glyph's outline: a varint contour count, and per contour a
+      varint piece count, its start point and its pieces (a line: its end point; a quadratic:
+      its control point, then its end point). Points are in units of QUANTUM font units (y up),
+      each coordinate the zigzag varint (LEB128) of its difference from the previous
+      coordinate of the same axis, carried across contours; the x of a piece's first point is
+      shifted left by one with the low bit set for a quadratic.
+"""
+import struct
+import sys
+from pathlib import Path
+
+from fontTools import subset
+from fontTools.pens.basePen import BasePen
+from fontTools.ttLib import TTFont
+
+CHARS = (
+    "".join(chr(c) for c in range(0x20, 0x7F))  # ASCII
+    + "".join(chr(c) for c in range(0xC0, 0x100) if c not in (0xD7, 0xF7))  # Latin-1 letters
+    + "".join(chr(c) for c in range(0x3B1, 0x3CA))  # Greek small letters
+    + "·−×÷°±ΓΔΘΛΠΣΦΨΩ′″–—…²³¹⁰⁴⁵⁶⁷⁸⁹₀₁₂₃ⁿ|≤≥≈→←∞√∂"
+)
+OUT = Path(__file__).resolve().parent.parent / "crates/spherekit-render/fonts"
+
+
+# Coordinates are stored in units of 2 font units (1/1024 em): at most a quarter of a unit
+# off, 0.01 px at 40 px per em.
+QUANTUM = 2
+
+
+class Recorder(BasePen):
+    """Collects contours as (start, [(control or None, end)])."""
+
+    def __init__(self, glyphset):
+        super().__init__(glyphset)
+        self.contours = []
+
+    def _moveTo(self, p):
+        self.contours.append((p, []))
+
+    def _lineTo(self, p):
+        self.contours[-1][1].append((None, p))
+
+    def _qCurveToOne(self, p1, p2):
+        self.contours[-1][1].append((p1, p2))
+
+    def _curveToOne(self, p1, p2, p3):
+        raise SystemExit("cubic outlines are not expected in a TrueType font")
+
+    def _closePath(self):
+        pass
+
+    _endPath = _closePath
+
+
+def varint(out, z):
+    while True:
+        byte = z & 0x7F
+        z >>= 7
+        out.append(byte | (0x80 if z else 0))
+        if not z:
+            return
+
+
+def zigzag(d):
+    return (d << 1) if d >= 0 else ((-d << 1) - 1)
+
+
+def encode(contours):
+    out = bytearray()
+    last = [0, 0]
+
+    def point(p, flag=None):
+        q = [round(p[0] / QUANTUM), round(p[1] / QUANTUM)]
+        zx, zy = zigzag(q[0] - last[0]), zigzag(q[1] - last[1])
+        if flag is not None:
+            zx = (zx << 1) | flag
+        varint(out, zx)
+        varint(out, zy)
+        last[:] = q
+
+    varint(out, len(contours))
+    for start, pieces in contours:
+        varint(out, len(pieces))
+        point(start)
+        for ctrl, end in pieces:
+            if ctrl is None:
+                point(end, 0)
+            else:
+                point(ctrl, 1)
+                point(end)
+    return out
+
+
+def main():
+    src = sys.argv[1] if len(sys.argv) > 1 else "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
+    options = subset.Options()
+    options.layout_features = []
+    options.hinting = False
+    options.name_IDs = ["*"]
+    options.notdef_outline = True
+    font = subset.load_font(src, options)
+    sub = subset.Subsetter(options)
+    sub.populate(text=CHARS)
+    sub.subset(font)
+    OUT.mkdir(parents=True, exist_ok=True)
+    subset.save_font(font, str(OUT / "DejaVuSans-subset.ttf"), options)
+
+    font = TTFont(str(OUT / "DejaVuSans-subset.ttf"))
+    cmap = font.getBestCmap()
+    glyphset = font.getGlyphSet()
+    hmtx = font["hmtx"]
+    entries, stream = [], bytearray()
+    for cp in sorted(cmap):
+        name = cmap[cp]
+        pen = Recorder(glyphset)
+        glyphset[name].draw(pen)
+        data = encode(pen.contours)
+        entries.append((cp, hmtx[name][0], len(stream), len(data)))
+        stream += data
+    head = font["head"]
+    hhea = font["hhea"]
+    blob = bytearray(b"SKF2")
+    blob += struct.pack("<HhhH", head.unitsPerEm, hhea.ascent, hhea.descent, len(entries))
+    for cp, adv, off, n in entries:
+        blob += struct.pack("<IHIH", cp, adv, off, n)
+    blob += stream
+    (OUT / "glyphs.bin").write_bytes(bytes(blob))
+    missing = [c for c in CHARS if ord(c) not in cmap]
+    print(f"{len(entries)} glyphs, {len(blob)} bytes; missing: {missing!r}")
+
+
+if __name__ == "__main__":
+    main()
