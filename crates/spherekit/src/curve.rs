@@ -35,9 +35,15 @@ pub struct Jet<P: Manifold> {
 /// # Domain policy
 ///
 /// Every curve is defined on a closed interval [`domain`](Curve::domain) `= [t0, t1]`.
-/// Parameters outside it are **clamped**: `eval(t)` for `t < t0` is `eval(t0)`, and the jet there
-/// is the one-sided jet at `t0` (derivatives are not zeroed). A NaN parameter is a caller bug
-/// (checked in debug builds); release builds treat it as `t0` so that no NaN is produced.
+/// Parameters outside it are **clamped**: `eval(t)` for `t < t0` is `eval(t0)` (likewise
+/// `t = −∞`), and the jet there is the one-sided jet at `t0`. The derivatives are **not**
+/// zeroed: a clamped jet keeps reporting the end velocity, which is wrong for physics code
+/// that integrates it outside the domain. A NaN parameter is treated as `t0`, in release and
+/// debug builds alike, so that evaluation never panics and never produces a NaN.
+///
+/// For another policy outside the domain (hold the end at rest, continue along the end's
+/// geodesic, repeat periodically, or a typed error) wrap the curve in
+/// [`Extrapolated`](crate::Extrapolated) with an [`Extrapolate`](crate::Extrapolate) policy.
 pub trait Curve: core::fmt::Debug {
     /// The sphere the curve lies on.
     type Point: Manifold;
@@ -115,9 +121,9 @@ pub trait Curve: core::fmt::Debug {
     }
 }
 
-/// Clamps `t` to `[t0, t1]`, mapping NaN to `t0` (see the domain policy of [`Curve`]).
+/// Clamps `t` to `[t0, t1]`, mapping NaN to `t0` (see the domain policy of [`Curve`]); never
+/// panics.
 #[inline]
 pub(crate) fn clamp_param(t: f64, [t0, t1]: [f64; 2]) -> f64 {
-    debug_assert!(!t.is_nan(), "curve evaluated at NaN");
     if t.is_nan() { t0 } else { t.clamp(t0, t1) }
 }

@@ -286,3 +286,82 @@ impl fmt::Display for SolveError {
 }
 
 impl core::error::Error for SolveError {}
+
+/// Why an arc-length parametrisation ([`ArcLength`](crate::ArcLength)) could not be built.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum ArcLengthError {
+    /// The accuracy is not a positive finite number of radians.
+    InvalidAccuracy {
+        /// The accuracy given.
+        accuracy: f64,
+    },
+    /// The curve has zero length (within the accuracy): it stays at one point, so there is no
+    /// arc-length parameter.
+    ZeroLength,
+    /// The curve's speed is not finite at the parameter `t`.
+    NonFiniteSpeed {
+        /// The parameter of the curve.
+        t: f64,
+    },
+}
+
+impl fmt::Display for ArcLengthError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::InvalidAccuracy { accuracy } => write!(
+                f,
+                "the arc-length accuracy {accuracy:e} must be a positive finite number of radians"
+            ),
+            Self::ZeroLength => f.write_str(
+                "the curve has zero length: it stays at one point and has no arc-length parameter",
+            ),
+            Self::NonFiniteSpeed { t } => write!(f, "the curve's speed is not finite at t = {t:e}"),
+        }
+    }
+}
+
+impl core::error::Error for ArcLengthError {}
+
+/// Why a checked evaluation ([`Extrapolated::try_jet`](crate::Extrapolated::try_jet)) has no
+/// value at a parameter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum DomainError {
+    /// The parameter `t` is outside the curve's domain and the policy is
+    /// [`Extrapolate::Error`](crate::Extrapolate::Error).
+    Outside {
+        /// The parameter.
+        t: f64,
+        /// The curve's domain `[t0, t1]`.
+        domain: [f64; 2],
+    },
+    /// The parameter is NaN (under every policy).
+    NotANumber,
+    /// The parameter `t` is infinite, or so far outside the domain that the extension angle
+    /// overflows, and the policy ([`Extend`](crate::Extrapolate::Extend) or
+    /// [`Cycle`](crate::Extrapolate::Cycle)) has no value there.
+    Unbounded {
+        /// The parameter.
+        t: f64,
+    },
+}
+
+impl fmt::Display for DomainError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Outside { t, domain } => write!(
+                f,
+                "the parameter {t} is outside the curve's domain [{}, {}]",
+                domain[0], domain[1]
+            ),
+            Self::NotANumber => f.write_str("the parameter is NaN"),
+            Self::Unbounded { t } => write!(
+                f,
+                "the parameter {t} is too far outside the domain: the curve has no value there under this extrapolation policy"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for DomainError {}

@@ -72,7 +72,10 @@
 //!   non-negative dot products, and the scene format calls it once before construction unless
 //!   `"canonicalize": false`.
 //! - **Domain.** Every curve has a parameter interval `[t0, t1]` ([`Curve::domain`]); outside it
-//!   the parameter is clamped (see [`Curve`]).
+//!   the parameter is clamped, and NaN is treated as `t0` (see [`Curve`]). Other policies
+//!   (hold at rest, extend along the end geodesic, cycle, typed error) are [`Extrapolated`].
+//! - **Arc length** is great-circle arc length on S² and S^m and the **rotation angle** on S³
+//!   ([`Manifold::SPEED_SCALE`]: `|ω| = 2|q′|`); [`ArcLength`] reparametrises any curve by it.
 //! - **Antipodal points** have no unique geodesic. Constructions reject them with
 //!   [`SplineError::Antipodal`] (within [`ANTIPODAL_TOLERANCE`]); nothing returns NaN.
 //!
@@ -94,6 +97,7 @@ pub use glam;
 
 mod ambient;
 mod arc_blend;
+mod arclength;
 mod beta_solve;
 mod beta_spline;
 mod bezier;
@@ -104,6 +108,7 @@ mod corner_blend;
 mod cubic;
 mod curve;
 mod error;
+mod extrapolate;
 mod flow;
 mod gamma_spline;
 mod geodesic;
@@ -121,6 +126,7 @@ mod squad;
 
 pub use ambient::{Ambient, VecN};
 pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
+pub use arclength::{ArcLength, ArcLengthInfo, DEFAULT_ACCURACY, Stall};
 pub use beta_spline::{
     BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
 };
@@ -131,7 +137,8 @@ pub use continuity::{ContinuityClass, JointContinuity, continuity};
 pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
 pub use cubic::{CubicEnd, CubicSolveInfo, CubicSpline, TANGENT_TOLERANCE};
 pub use curve::{Curve, Jet, Side};
-pub use error::{PointError, SolveError, SplineError};
+pub use error::{ArcLengthError, DomainError, PointError, SolveError, SplineError};
+pub use extrapolate::{Extrapolate, Extrapolated};
 pub use gamma_spline::{GammaJoint, GammaSpline, Gammas, LastEdge};
 pub use geodesic::{GeodesicSpline, NlerpSpline};
 pub use kim::{BezierKim, BsplineKim};

@@ -35,6 +35,16 @@ pub trait Manifold: Clone + Debug + PartialEq {
     /// The ambient vector type.
     type Vector: Ambient;
 
+    /// The factor from the ambient speed `|c′(t)|` of a curve to its speed in the sphere's
+    /// arc-length measure: the arc length of `c` is `SPEED_SCALE · ∫|c′(t)| dt`.
+    ///
+    /// `1` for S² and S^m (great-circle arc length in radians). `2` for
+    /// [`UnitQuat`](crate::UnitQuat): the arc length is the **rotation angle** turned, and a
+    /// quaternion curve moving at `|q′|` on S³ turns the body at `|ω| = 2|q′|` radians per
+    /// unit time (the factor 2 of the angular velocity `ω = 2·q′·q̄`). Arc-length
+    /// reparametrisation ([`ArcLength`](crate::ArcLength)) makes `SPEED_SCALE·|c′| = 1`.
+    const SPEED_SCALE: f64 = 1.0;
+
     /// The point as a unit vector of the ambient space.
     fn to_vector(&self) -> Self::Vector;
 

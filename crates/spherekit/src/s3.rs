@@ -235,6 +235,9 @@ impl core::ops::Neg for UnitQuat {
 impl Manifold for UnitQuat {
     type Vector = DVec4;
 
+    /// The rotation angle: `|ω| = 2|q′|`.
+    const SPEED_SCALE: f64 = 2.0;
+
     #[inline]
     fn to_vector(&self) -> DVec4 {
         DVec4::from(self.0)

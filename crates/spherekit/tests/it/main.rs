@@ -7,12 +7,14 @@
 
 mod support;
 
+mod arclength;
 mod beta_spline;
 mod bezier;
 mod catmull_rom;
 mod classic_stress;
 mod continuity;
 mod cubic;
+mod extrapolate;
 mod gamma_spline;
 mod geodesic;
 mod kim;
