@@ -116,7 +116,15 @@ fn spline_message(e: &SplineError) -> String {
             "params.{}_velocity: {e}",
             if *start { "start" } else { "end" }
         ),
-        SplineError::AntipodalClosing => format!("closed: {e}"),
+        SplineError::AntipodalClosing | SplineError::CoincidentClosing => format!("closed: {e}"),
+        SplineError::NoCircleAround {
+            first,
+            middle,
+            last,
+        } => format!(
+            "points[{first}] and points[{last}] coincide: no unique circle passes through points[{first}], points[{middle}] and points[{last}] of the loop"
+        ),
+        SplineError::TimingNotClosed { .. } => format!("params.timing: {e}"),
         // Errors added to the core later: its own words, which name no field.
         e => e.to_string(),
     }

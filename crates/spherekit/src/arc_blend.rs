@@ -112,6 +112,23 @@ pub(crate) fn check_neighbours<P: Manifold>(points: &[P], min: usize) -> Result<
     Ok(())
 }
 
+/// [`check_neighbours`] for a closed loop: also the last and the first point
+/// ([`SplineError::CoincidentClosing`], [`SplineError::AntipodalClosing`]).
+pub(crate) fn check_loop_neighbours<P: Manifold>(
+    points: &[P],
+    min: usize,
+) -> Result<(), SplineError> {
+    check_neighbours(points, min)?;
+    let (p, q) = (points[points.len() - 1].to_vector(), points[0].to_vector());
+    if (q - p).length() <= COINCIDENT_TOLERANCE {
+        return Err(SplineError::CoincidentClosing);
+    }
+    if points[points.len() - 1].is_antipodal(&points[0]) {
+        return Err(SplineError::AntipodalClosing);
+    }
+    Ok(())
+}
+
 /// How the parameter `t` of an [`ArcBlend`] runs through its keys: the knots `t₀ < … < t_k`
 /// with `r(t_i) = p_i`. Every timing traces the same curve and is Cⁿ in `t` (module docs,
 /// *Timing*); they differ in speed only.
@@ -123,6 +140,17 @@ pub(crate) fn check_neighbours<P: Manifold>(points: &[P], min: usize) -> Result<
 /// | `Uniform` | `t_i = i` | warped |
 /// | `Knots` | given | warped |
 /// | `Auto` | `Book` while well-conditioned, else `ArcLength`, else `Uniform` | |
+///
+/// **Closed loops** ([`ArcBlend::try_new_closed_with`]) have one knot more than points, the last
+/// the time of the return to `p₀`, and every timing is solved around the loop rather than
+/// propagated from the first key: at every key, the seam included, the warp of the module docs
+/// makes the two neighbouring segments meet to order `n` for the given spacings. `ArcLength`,
+/// `Uniform` and `Knots` therefore close every loop. `Book` carries the first spacing around by
+/// the ratios `ψ_j/φ_j` and comes back multiplied by their product `Π = ∏ ψ_j/φ_j`; it is
+/// accepted when `|Π − 1| ≤` [`CLOSURE_TOLERANCE`](Self::CLOSURE_TOLERANCE) (points on one circle:
+/// `ψ_j = φ_{j+1}` and the product telescopes to 1), and otherwise fails with
+/// [`SplineError::TimingNotClosed`]; the warps then absorb the rounding, so the seam is exact.
+/// `Auto` takes `Book` when it closes and is well-conditioned, else `ArcLength`, else `Uniform`.
 ///
 /// A knot sequence is *well-conditioned* here when
 /// `max(|t₀|, |t_k|)/min_i (t_{i+1} − t_i) ≤` [`CONDITION_LIMIT`](Self::CONDITION_LIMIT) `= 1e8`:
@@ -190,6 +218,9 @@ pub enum ArcBlendTiming {
 impl ArcBlendTiming {
     /// The largest `max(|t₀|, |t_k|)/min spacing` of well-conditioned knots (see the type docs).
     pub const CONDITION_LIMIT: f64 = 1e8;
+
+    /// The largest `|Π − 1|` for which the book's knots close a loop (see the type docs).
+    pub const CLOSURE_TOLERANCE: f64 = 1e-9;
 
     /// The timing's name: `"auto"`, `"book"`, `"arc-length"`, `"uniform"` or `"knots"`.
     #[must_use]
@@ -386,6 +417,7 @@ pub struct ArcBlend<P: Manifold> {
     /// segments (whose `width` is the knot spacing).
     warps: Vec<Warp>,
     timing: Resolved,
+    closed: bool,
 }
 
 /// The timing an [`ArcBlend`] was built with (`Auto` resolved).
@@ -445,30 +477,116 @@ impl<P: Manifold> ArcBlend<P> {
         timing: ArcBlendTiming,
     ) -> Result<Self, SplineError> {
         check_neighbours(&points, 3)?;
+        Self::build(points, order, timing, false)
+    }
+
+    /// Builds the closed Cⁿ loop through `points` (`p₀ … p_{m−1}`, m ≥ 3) with the
+    /// [`ArcBlendTiming::Auto`] timing.
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new_closed_with`](Self::try_new_closed_with).
+    pub fn try_new_closed(points: Vec<P>, order: usize) -> Result<Self, SplineError> {
+        Self::try_new_closed_with(points, order, ArcBlendTiming::Auto)
+    }
+
+    /// Builds the closed Cⁿ loop `p₀ → p₁ → … → p_{m−1} → p₀` (m ≥ 3) with the given timing.
+    ///
+    /// The triples wrap around the end: circle `j` passes through `p_j, p_{j+1}, p_{j+2}`
+    /// (indices mod m) for `j = 0 … m−1`, and every segment, the closing one `p_{m−1} → p₀`
+    /// included, is the blend `X_i(u) = 𝒢_i(w₁,ₙ(u)·φ_i)·𝒢_{i−1}(w₂,ₙ(u)·ψ_{i−1})·p_i` of the
+    /// type docs with `𝒢_{−1} = 𝒢_{m−1}`: the loop is Cⁿ at every key and at the seam. The knots
+    /// `t₀ < … < t_m` (one more than points) and the seam are solved as
+    /// [`ArcBlendTiming`] describes under *Closed loops*. Points on one circle give that
+    /// circle (with the book's knots, at unit angular speed).
+    ///
+    /// # Errors
+    ///
+    /// - [`SplineError::TooFewPoints`] for fewer than 3 points;
+    /// - [`SplineError::InvalidParameter`] (`order`) unless `1 ≤ order ≤ 10`;
+    /// - [`SplineError::Coincident`] / [`SplineError::Antipodal`] for coincident or antipodal
+    ///   consecutive points, [`SplineError::CoincidentClosing`] /
+    ///   [`SplineError::AntipodalClosing`] for the last and the first;
+    /// - [`SplineError::NoCircle`] when `p_j = p_{j+2}`, [`SplineError::NoCircleAround`] for a
+    ///   triple that wraps around the end;
+    /// - [`SplineError::TimingNotClosed`] for [`ArcBlendTiming::Book`] when the book's knots do
+    ///   not close, [`SplineError::TimingNotRepresentable`] as for open curves;
+    /// - for [`ArcBlendTiming::Knots`]: [`SplineError::KnotCount`] unless there are `m + 1`
+    ///   knots, and the errors of [`Knots::try_new`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, ArcBlend, ArcBlendTiming, Curve, Manifold, S2Point, glam::DVec3};
+    ///
+    /// let p = |x, y, z| S2Point::try_new(DVec3::new(x, y, z)).unwrap();
+    /// let points = vec![p(1.0, 0.0, 0.3), p(0.2, 0.9, 0.4), p(-0.8, 0.4, 0.1), p(-0.3, -0.9, 0.5)];
+    /// let c = ArcBlend::try_new_closed_with(points.clone(), 3, ArcBlendTiming::Uniform).unwrap();
+    /// assert_eq!(c.knots(), [0.0, 1.0, 2.0, 3.0, 4.0]);
+    /// assert!(c.eval(4.0).dist(&points[0]) < 1e-15);
+    /// let seam = continuity(&c)[3]; // the seam at t = 4, C³ (checked here to order 2)
+    /// assert!(seam.t == 4.0 && seam.c1 < 1e-12 && seam.c2 < 1e-11);
+    /// ```
+    pub fn try_new_closed_with(
+        points: Vec<P>,
+        order: usize,
+        timing: ArcBlendTiming,
+    ) -> Result<Self, SplineError> {
+        check_loop_neighbours(&points, 3)?;
+        Self::build(points, order, timing, true)
+    }
+
+    /// The construction of [`try_new_with`](Self::try_new_with) and
+    /// [`try_new_closed_with`](Self::try_new_closed_with), on checked points.
+    fn build(
+        mut points: Vec<P>,
+        order: usize,
+        timing: ArcBlendTiming,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
         let poly = check_order(order)?;
-        let circles = points
-            .windows(3)
-            .enumerate()
-            .map(|(j, w)| {
-                CircleArc::through(&w[0], &w[1], &w[2]).map_err(|e| match e {
-                    SplineError::Coincident { index } => {
-                        SplineError::Coincident { index: j + index }
+        let m = points.len();
+        let triples = if closed { m } else { m - 2 };
+        let circles = (0..triples)
+            .map(|j| {
+                let [a, b, c] = [j, (j + 1) % m, (j + 2) % m];
+                CircleArc::through(&points[a], &points[b], &points[c]).map_err(|e| match e {
+                    SplineError::NoCircle { .. } if c < a => SplineError::NoCircleAround {
+                        first: a,
+                        middle: b,
+                        last: c,
+                    },
+                    SplineError::Coincident { index } if (j + index) % m == m - 1 && closed => {
+                        SplineError::CoincidentClosing
                     }
+                    SplineError::Coincident { index } => SplineError::Coincident {
+                        index: (j + index) % m,
+                    },
                     SplineError::NoCircle { index } => SplineError::NoCircle { index: j + index },
                     e => e,
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let k = points.len() - 1;
+        // Segments: k = m − 1 open, m closed (the closing one last).
+        let k = if closed { m } else { m - 1 };
+        let book_knots = || -> Result<Knots, SplineError> {
+            let widths = book_widths(&circles, k);
+            if closed {
+                let c = &circles[m - 1];
+                let ratio = widths[m - 1] * (c.second_angle() / c.first_angle()) / widths[0];
+                if !((ratio - 1.0).abs() <= ArcBlendTiming::CLOSURE_TOLERANCE) {
+                    return Err(SplineError::TimingNotClosed {
+                        timing: "book",
+                        ratio,
+                    });
+                }
+            }
+            timing_knots("book", &widths)
+        };
+        let arc_knots = || timing_knots("arc-length", &arc_length_widths(&circles, k, closed));
         let (knots, resolved) = match timing {
-            ArcBlendTiming::Book => (
-                timing_knots("book", &book_widths(&circles))?,
-                Resolved::Book,
-            ),
-            ArcBlendTiming::ArcLength => (
-                timing_knots("arc-length", &arc_length_widths(&circles))?,
-                Resolved::ArcLength,
-            ),
+            ArcBlendTiming::Book => (book_knots()?, Resolved::Book),
+            ArcBlendTiming::ArcLength => (arc_knots()?, Resolved::ArcLength),
             ArcBlendTiming::Uniform => (Knots::uniform(k + 1), Resolved::Uniform),
             ArcBlendTiming::Knots(t) => {
                 if t.len() != k + 1 {
@@ -484,23 +602,24 @@ impl<P: Manifold> ArcBlend<P> {
                     r.ok()
                         .filter(|t| condition(t.as_slice()) <= ArcBlendTiming::CONDITION_LIMIT)
                 };
-                if let Some(t) = good(timing_knots("book", &book_widths(&circles))) {
+                if let Some(t) = good(book_knots()) {
                     (t, Resolved::Book)
-                } else if let Some(t) =
-                    good(timing_knots("arc-length", &arc_length_widths(&circles)))
-                {
+                } else if let Some(t) = good(arc_knots()) {
                     (t, Resolved::ArcLength)
                 } else {
                     (Knots::uniform(k + 1), Resolved::Uniform)
                 }
             }
         };
-        let book = resolved == Resolved::Book;
+        // The book's open segments are affine in t; every other curve is warped, the book's
+        // closed loop too (its warps are within the closure tolerance of the identity and make
+        // the seam exact).
+        let book = resolved == Resolved::Book && !closed;
         let segments = (0..k)
             .map(|i| {
-                // The book's segments are affine in t; the others are built in u (width 1).
+                // The affine segments are built in t, the warped ones in u (width 1).
                 let width = if book { knots.width(i) } else { 1.0 };
-                if i == 0 {
+                if !closed && i == 0 {
                     Segment {
                         base: points[0].to_vector(),
                         outer: circles[0].flow().clone(),
@@ -509,7 +628,7 @@ impl<P: Manifold> ArcBlend<P> {
                         weights: Weights::Linear,
                         width,
                     }
-                } else if i == k - 1 {
+                } else if !closed && i == k - 1 {
                     let c = &circles[k - 2];
                     Segment {
                         base: points[k - 1].to_vector(),
@@ -520,7 +639,7 @@ impl<P: Manifold> ArcBlend<P> {
                         width,
                     }
                 } else {
-                    let (c, prev) = (&circles[i], &circles[i - 1]);
+                    let (c, prev) = (&circles[i], &circles[(i + triples - 1) % triples]);
                     Segment {
                         base: points[i].to_vector(),
                         outer: c.flow().clone(),
@@ -535,8 +654,11 @@ impl<P: Manifold> ArcBlend<P> {
         let warps = if book {
             Vec::new()
         } else {
-            warps(&circles, &knots)
+            warps(&circles, &knots, closed)
         };
+        if closed {
+            points.push(points[0].clone());
+        }
         Ok(Self {
             points,
             knots,
@@ -545,17 +667,18 @@ impl<P: Manifold> ArcBlend<P> {
             segments,
             warps,
             timing: resolved,
+            closed,
         })
     }
 
-    /// The interpolated points.
+    /// The interpolated points (for a closed loop without the repeated first one).
     #[must_use]
     pub fn points(&self) -> &[P] {
-        &self.points
+        &self.points[..self.points.len() - usize::from(self.closed)]
     }
 
     /// The knots `t₀ < t₁ < … < t_k` where the curve passes the points (`t₀ = 0` except for
-    /// given knots).
+    /// given knots; a closed loop has one more, the time of the return to `p₀`).
     #[must_use]
     pub fn knots(&self) -> &[f64] {
         self.knots.as_slice()
@@ -628,16 +751,17 @@ impl<P: Manifold> ArcBlend<P> {
         out
     }
 
-    /// The circles through the consecutive triples `(p_j, p_{j+1}, p_{j+2})`.
+    /// The circles through the consecutive triples `(p_j, p_{j+1}, p_{j+2})` (for a closed loop
+    /// also the two that wrap around the end, indices mod m).
     #[must_use]
     pub fn circles(&self) -> &[CircleArc<P>] {
         &self.circles
     }
 }
 
-/// The book's spacings `Δ₀ = φ₀`, `Δ_i = Δ_{i−1}·ψ_{i−1}/φ_{i−1}` (Algorithm 8.1).
-fn book_widths<P: Manifold>(circles: &[CircleArc<P>]) -> Vec<f64> {
-    let k = circles.len() + 1;
+/// The book's spacings `Δ₀ = φ₀`, `Δ_i = Δ_{i−1}·ψ_{i−1}/φ_{i−1}` (Algorithm 8.1), for `k`
+/// segments.
+fn book_widths<P: Manifold>(circles: &[CircleArc<P>], k: usize) -> Vec<f64> {
     let mut widths = Vec::with_capacity(k);
     widths.push(circles[0].first_angle());
     for i in 1..k {
@@ -647,14 +771,17 @@ fn book_widths<P: Manifold>(circles: &[CircleArc<P>]) -> Vec<f64> {
     widths
 }
 
-/// The mean lengths of the two circle arcs of each segment (one arc at the ends).
-fn arc_length_widths<P: Manifold>(circles: &[CircleArc<P>]) -> Vec<f64> {
-    let k = circles.len() + 1;
+/// The mean lengths of the two circle arcs of each of the `k` segments (one arc at the ends of
+/// an open curve).
+fn arc_length_widths<P: Manifold>(circles: &[CircleArc<P>], k: usize, closed: bool) -> Vec<f64> {
     let first = |c: &CircleArc<P>| c.radius() * c.first_angle();
     let second = |c: &CircleArc<P>| c.radius() * c.second_angle();
+    let n = circles.len();
     (0..k)
         .map(|i| {
-            if i == 0 {
+            if closed {
+                0.5 * (second(&circles[(i + n - 1) % n]) + first(&circles[i]))
+            } else if i == 0 {
                 first(&circles[0])
             } else if i == k - 1 {
                 second(&circles[k - 2])
@@ -667,18 +794,21 @@ fn arc_length_widths<P: Manifold>(circles: &[CircleArc<P>]) -> Vec<f64> {
 
 /// The warps making the segments Cⁿ across the keys for the spacings of `knots` (module docs):
 /// at key `i`, `ρ_i = (φ_{i−1}/ψ_{i−1})·(h_i/h_{i−1})`, `A_i = min(1, ρ_i)`,
-/// `B_{i−1} = min(1, 1/ρ_i)`; `A₀ = B_{k−1} = 1`.
-fn warps<P: Manifold>(circles: &[CircleArc<P>], knots: &Knots) -> Vec<Warp> {
+/// `B_{i−1} = min(1, 1/ρ_i)`; `A₀ = B_{k−1} = 1` for an open curve, while a closed one has the
+/// same condition at the seam (key 0 with `h₋₁ = h_{k−1}` and circle `k − 1`).
+fn warps<P: Manifold>(circles: &[CircleArc<P>], knots: &Knots, closed: bool) -> Vec<Warp> {
     let k = knots.segment_count();
     let mut start = vec![1.0; k];
     let mut end = vec![1.0; k];
-    for i in 1..k {
-        let c = &circles[i - 1];
-        let rho = (c.first_angle() / c.second_angle()) * (knots.width(i) / knots.width(i - 1));
+    let first_key = usize::from(!closed);
+    for i in first_key..k {
+        let prev = (i + k - 1) % k;
+        let c = &circles[prev];
+        let rho = (c.first_angle() / c.second_angle()) * (knots.width(i) / knots.width(prev));
         if rho < 1.0 {
             start[i] = rho;
         } else if rho > 1.0 {
-            end[i - 1] = 1.0 / rho;
+            end[prev] = 1.0 / rho;
         }
     }
     start
@@ -697,6 +827,10 @@ impl<P: Manifold> Curve for ArcBlend<P> {
 
     fn joints(&self) -> &[f64] {
         self.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {

@@ -747,6 +747,10 @@ impl<C: Curve> Curve for ArcLength<C> {
         &self.joints
     }
 
+    fn is_closed(&self) -> bool {
+        self.curve.is_closed()
+    }
+
     fn jet_at(&self, s: f64, side: Side) -> Jet<C::Point> {
         let (cell, u) = self.locate(s, side);
         let t = self.cells[cell].t_at(u);

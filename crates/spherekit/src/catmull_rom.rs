@@ -7,7 +7,7 @@
 use crate::bezier::CubicSegment;
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
-use crate::geodesic::check_chain;
+use crate::geodesic::{MIN_LOOP_POINTS, check_chain, check_loop};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
 use crate::s3::UnitQuat;
@@ -45,6 +45,13 @@ use crate::slerp_jet::ScalarJet;
 /// uniform knots `Tᵢ` is half the difference over two steps, as in the Euclidean
 /// `c′(i) = (cᵢ₊₁ − cᵢ₋₁)/2`.
 ///
+/// **Closed loops** ([`try_new_closed`](Self::try_new_closed),
+/// [`try_new_quaternion_closed`](Self::try_new_quaternion_closed)): every point is a key,
+/// `c₀ … cₙ₋₁`, with knots `t₀ < … < tₙ` (the last the time of the return to `c₀`), and the
+/// neighbours wrap around: `c₋₁ = cₙ₋₁`, `cₙ = c₀`, `cₙ₊₁ = c₁`, `t₋₁ = t₀ − hₙ₋₁`,
+/// `tₙ₊₁ = tₙ + h₀`. The tangent at `c₀` is then the same at both ends of the domain, so the
+/// loop is C¹ at the seam as at the other keys.
+///
 /// Keys are used as given (no sign flips besides the short-path rule of the quaternion tangent);
 /// canonicalise quaternion keys with [`unflip`](crate::unflip) first.
 ///
@@ -65,20 +72,35 @@ use crate::slerp_jet::ScalarJet;
 #[derive(Clone, Debug)]
 pub struct CatmullRom<P: Manifold> {
     points: Vec<P>,
+    closed: bool,
     knots: Knots,
     controls: Vec<P>,
     segments: Vec<CubicSegment<P>>,
 }
 
-/// `t₋₁ … tₙ₊₁`: the knots with the end intervals mirrored.
-fn extended_knots(knots: &Knots) -> Vec<f64> {
+/// The central-difference stencil of every key `c₀ … cₙ`: `(cₖ, cₖ₋₁, cₖ₊₁, tₖ₊₁ − tₖ₋₁)`.
+/// Open (`points = c₋₁ … cₙ₊₁`): the end intervals are mirrored, `t₋₁ = t₀ − h₀`,
+/// `tₙ₊₁ = tₙ + hₙ₋₁`. Closed (`points = c₀ … cₙ₋₁`): indices and spacings wrap around, and
+/// the last key is `c₀` again.
+fn stencil<'a, P>(points: &'a [P], knots: &Knots, closed: bool) -> Vec<(&'a P, &'a P, &'a P, f64)> {
+    let n = knots.segment_count();
     let k = knots.as_slice();
-    let n = k.len() - 1;
-    let mut e = Vec::with_capacity(n + 3);
-    e.push(k[0] - knots.width(0));
-    e.extend_from_slice(k);
-    e.push(k[n] + knots.width(n - 1));
-    e
+    // t₋₁ … tₙ₊₁ with the end intervals mirrored (open curves).
+    let mut ext = Vec::with_capacity(n + 3);
+    ext.push(k[0] - knots.width(0));
+    ext.extend_from_slice(k);
+    ext.push(k[n] + knots.width(n - 1));
+    (0..=n)
+        .map(|k| {
+            if closed {
+                let (prev, next) = ((k + n - 1) % n, (k + 1) % n);
+                let w = knots.width(prev) + knots.width(k % n);
+                (&points[k % n], &points[prev], &points[next], w)
+            } else {
+                (&points[k + 1], &points[k], &points[k + 2], ext[k + 2] - ext[k])
+            }
+        })
+        .collect()
 }
 
 impl<P: Manifold> CatmullRom<P> {
@@ -95,24 +117,58 @@ impl<P: Manifold> CatmullRom<P> {
     pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
         check_chain(&points, 4)?;
         let knots = Knots::or_uniform(knots, points.len() - 2)?;
-        let ext = extended_knots(&knots);
-        // tangents[k] belongs to points[k + 1] = c_k, k = 0..=n.
-        let tangents: Vec<P::Vector> = (1..points.len() - 1)
-            .map(|j| {
-                let c = &points[j];
-                (c.log(&points[j + 1]) - c.log(&points[j - 1])) * (1.0 / (ext[j + 1] - ext[j - 1]))
-            })
+        Self::intrinsic(points, knots, false)
+    }
+
+    /// Builds the closed loop through the keys `points = c₀ … cₙ₋₁` (n ≥ 3) with the intrinsic
+    /// tangent and periodic neighbours (type docs); `knots` are `n + 1` times, the last the
+    /// time of the return to `c₀` (default `0, 1, …, n`).
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 3 points; [`SplineError::Antipodal`] for
+    /// antipodal consecutive points and [`SplineError::AntipodalClosing`] for an antipodal last
+    /// and first point (or, in rare configurations, for antipodal derived control points of
+    /// segment `i`, reported as index `i`); the knot errors of [`Knots::or_uniform`]
+    /// (`n + 1` knots).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, CatmullRom, Curve, S2Point};
+    ///
+    /// let c = CatmullRom::try_new_closed(vec![S2Point::X, S2Point::Y, S2Point::Z], None).unwrap();
+    /// assert_eq!(c.domain(), [0.0, 3.0]);
+    /// assert_eq!(c.eval(2.0), S2Point::Z);
+    /// let seam = continuity(&c)[2]; // the seam at t = 3 is the last joint
+    /// assert!(seam.t == 3.0 && seam.c0 < 1e-15 && seam.c1 < 1e-12);
+    /// ```
+    pub fn try_new_closed(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_loop(&points, MIN_LOOP_POINTS)?;
+        let knots = Knots::or_uniform(knots, points.len() + 1)?;
+        Self::intrinsic(points, knots, true)
+    }
+
+    /// The intrinsic tangents `Tₖ = (log_{cₖ}(cₖ₊₁) − log_{cₖ}(cₖ₋₁))/Wₖ` and the segments.
+    fn intrinsic(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        let stencil = stencil(&points, &knots, closed);
+        let keys: Vec<P> = stencil.iter().map(|s| s.0.clone()).collect();
+        let tangents: Vec<P::Vector> = stencil
+            .iter()
+            .map(|&(c, prev, next, w)| (c.log(next) - c.log(prev)) * (1.0 / w))
             .collect();
-        Self::assemble(points, knots, |c, k, step| {
+        Self::assemble(points, keys, knots, closed, |c, k, step| {
             c.exp(&(tangents[k].clone() * step))
         })
     }
 
-    /// Builds the segments from a rule `step(c_k, k, s) = point at parameter offset s along the
-    /// tangent at c_k`.
+    /// Builds the segments through `keys = c₀ … cₙ` from a rule `step(c_k, k, s) = point at
+    /// parameter offset s along the tangent at c_k`.
     fn assemble(
         points: Vec<P>,
+        keys: Vec<P>,
         knots: Knots,
+        closed: bool,
         step: impl Fn(&P, usize, f64) -> P,
     ) -> Result<Self, SplineError> {
         let n = knots.segment_count();
@@ -120,24 +176,28 @@ impl<P: Manifold> CatmullRom<P> {
         let mut segments = Vec::with_capacity(n);
         for i in 0..n {
             let h = knots.width(i);
-            let (c0, c1) = (&points[i + 1], &points[i + 2]);
+            let (c0, c1) = (&keys[i], &keys[i + 1]);
             let d = step(c0, i, h / 3.0);
             let e = step(c1, i + 1, -h / 3.0);
-            let seg = CubicSegment::try_new([c0.clone(), d, e, c1.clone()])
-                .map_err(|_| SplineError::Antipodal { index: i + 1 })?;
+            let seg = CubicSegment::try_new([c0.clone(), d, e, c1.clone()]).map_err(|_| {
+                SplineError::Antipodal {
+                    index: i + usize::from(!closed),
+                }
+            })?;
             controls.extend_from_slice(&seg.controls()[..3]);
             segments.push(seg);
         }
-        controls.push(points[n + 1].clone());
+        controls.push(keys[n].clone());
         Ok(Self {
             points,
+            closed,
             knots,
             controls,
             segments,
         })
     }
 
-    /// The input points `c₋₁ … cₙ₊₁`.
+    /// The input points: `c₋₁ … cₙ₊₁` (open), `c₀ … cₙ₋₁` (closed).
     #[must_use]
     pub fn points(&self) -> &[P] {
         &self.points
@@ -150,7 +210,7 @@ impl<P: Manifold> CatmullRom<P> {
         &self.controls
     }
 
-    /// The knots of `c₀ … cₙ`.
+    /// The knots of `c₀ … cₙ` (closed: `n + 1`, the last for the return to `c₀`).
     #[must_use]
     pub fn knots(&self) -> &Knots {
         &self.knots
@@ -189,18 +249,39 @@ impl CatmullRom<UnitQuat> {
     ) -> Result<Self, SplineError> {
         check_chain(&points, 4)?;
         let knots = Knots::or_uniform(knots, points.len() - 2)?;
-        let ext = extended_knots(&knots);
-        // logs[k] = log(X_k)/W_k for c_k = points[k + 1], k = 0..=n.
-        let logs: Vec<glam::DVec3> = (1..points.len() - 1)
-            .map(|j| {
-                let mut x = points[j + 1].mul(points[j - 1].conjugate());
+        Self::quaternion(points, knots, false)
+    }
+
+    /// The closed loop of [`try_new_closed`](CatmullRom::try_new_closed) with the quaternion
+    /// tangent rule of [`try_new_quaternion`](Self::try_new_quaternion).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new_closed`](CatmullRom::try_new_closed).
+    pub fn try_new_quaternion_closed(
+        points: Vec<UnitQuat>,
+        knots: Option<Vec<f64>>,
+    ) -> Result<Self, SplineError> {
+        check_loop(&points, MIN_LOOP_POINTS)?;
+        let knots = Knots::or_uniform(knots, points.len() + 1)?;
+        Self::quaternion(points, knots, true)
+    }
+
+    /// `logs[k] = log(Xₖ)/Wₖ` with `Xₖ = ±cₖ₊₁·cₖ₋₁⁻¹` and the segments.
+    fn quaternion(points: Vec<UnitQuat>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        let stencil = stencil(&points, &knots, closed);
+        let keys: Vec<UnitQuat> = stencil.iter().map(|s| *s.0).collect();
+        let logs: Vec<glam::DVec3> = stencil
+            .iter()
+            .map(|&(_, prev, next, w)| {
+                let mut x = next.mul(prev.conjugate());
                 if x.scalar() < 0.0 {
                     x = x.neg();
                 }
-                x.log() * (1.0 / (ext[j + 1] - ext[j - 1]))
+                x.log() * (1.0 / w)
             })
             .collect();
-        Self::assemble(points, knots, |c, k, step| {
+        Self::assemble(points, keys, knots, closed, |c, k, step| {
             UnitQuat::exp(logs[k] * step).mul(*c)
         })
     }
@@ -215,6 +296,10 @@ impl<P: Manifold> Curve for CatmullRom<P> {
 
     fn joints(&self) -> &[f64] {
         self.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {

@@ -4,7 +4,7 @@
 //! Continuity report of a piecewise curve at its joints, from the exact one-sided jets.
 
 use crate::ambient::Ambient;
-use crate::curve::{Curve, Side};
+use crate::curve::{Curve, Jet, Side};
 use crate::manifold::Manifold;
 
 /// The jumps of a curve at one interior joint.
@@ -110,6 +110,8 @@ impl JointContinuity {
 
 /// The jumps of point, velocity and acceleration at every interior joint of `curve` (the
 /// entries of [`Curve::joints`] other than the two ends), from [`Curve::jet_at`] on both sides.
+/// A closed curve ([`Curve::is_closed`]) has one more joint, the seam, reported last with
+/// `t = t1`: the end from the left, `c(t1⁻)`, against the start from the right, `c(t0⁺)`.
 ///
 /// # Examples
 ///
@@ -124,32 +126,45 @@ impl JointContinuity {
 /// assert!(report[0].c1 > 1.0); // … with a corner
 /// assert!(report[0].g1 > 1.0); // the direction turns by 90°: not even G¹
 /// assert_eq!(report[0].order(1e-12), Some(0));
+/// // Closed: the seam at t = 3 is the last joint.
+/// let loop_ = GeodesicSpline::try_new_closed(vec![S2Point::X, S2Point::Y, S2Point::Z], None).unwrap();
+/// let report = continuity(&loop_);
+/// assert_eq!(report.len(), 3);
+/// assert_eq!(report[2].t, 3.0);
+/// assert!(report[2].c0 < 1e-15 && report[2].c1 > 1.0);
 /// ```
 #[must_use]
 pub fn continuity<C: Curve + ?Sized>(curve: &C) -> Vec<JointContinuity> {
     let joints = curve.joints();
-    if joints.len() < 3 {
-        return Vec::new();
-    }
-    joints[1..joints.len() - 1]
+    let (first, last) = (joints[0], joints[joints.len() - 1]);
+    let mut out: Vec<JointContinuity> = joints[1..joints.len() - 1]
         .iter()
-        .map(|&t| {
-            let l = curve.jet_at(t, Side::Left);
-            let r = curve.jet_at(t, Side::Right);
-            let c1 = (l.velocity.clone() - r.velocity.clone()).length();
-            let (sl, sr) = (l.velocity.length(), r.velocity.length());
-            let g1 = if sl > 0.0 && sr > 0.0 {
-                (l.velocity * (1.0 / sl) - r.velocity * (1.0 / sr)).length()
-            } else {
-                c1
-            };
-            JointContinuity {
-                t,
-                c0: (l.point.to_vector() - r.point.to_vector()).length(),
-                c1,
-                c2: (l.acceleration - r.acceleration).length(),
-                g1,
-            }
-        })
-        .collect()
+        .map(|&t| jumps(t, curve.jet_at(t, Side::Left), curve.jet_at(t, Side::Right)))
+        .collect();
+    if curve.is_closed() {
+        out.push(jumps(
+            last,
+            curve.jet_at(last, Side::Left),
+            curve.jet_at(first, Side::Right),
+        ));
+    }
+    out
+}
+
+/// The jumps between the one-sided jets `l` and `r` at `t`.
+fn jumps<P: Manifold>(t: f64, l: Jet<P>, r: Jet<P>) -> JointContinuity {
+    let c1 = (l.velocity.clone() - r.velocity.clone()).length();
+    let (sl, sr) = (l.velocity.length(), r.velocity.length());
+    let g1 = if sl > 0.0 && sr > 0.0 {
+        (l.velocity * (1.0 / sl) - r.velocity * (1.0 / sr)).length()
+    } else {
+        c1
+    };
+    JointContinuity {
+        t,
+        c0: (l.point.to_vector() - r.point.to_vector()).length(),
+        c1,
+        c2: (l.acceleration - r.acceleration).length(),
+        g1,
+    }
 }

@@ -6,7 +6,7 @@
 use glam::{DQuat, DVec4};
 
 use crate::ambient::Ambient;
-use crate::arc_blend::{check_neighbours, check_order};
+use crate::arc_blend::{check_loop_neighbours, check_neighbours, check_order};
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::flow::{Flow, LeftMultiplication, PlaneRotation, Segment, Weights};
@@ -22,6 +22,7 @@ pub const DEFAULT_CORNER_FRACTION: f64 = 0.25;
 /// its angle `Θ_j` in the flow's parameter.
 #[derive(Clone, Debug)]
 struct CornerCore<V, F> {
+    closed: bool,
     knots: Knots,
     poly: SmoothingPolynomials,
     fraction: f64,
@@ -39,14 +40,46 @@ fn check_fraction(fraction: f64) -> Result<(), SplineError> {
     }
 }
 
+/// The vertices `vs` as ambient vectors, for a closed polygon with the first repeated at the
+/// end, after the checks of an open or closed polyline.
+fn polyline<P: Manifold>(points: &[P], closed: bool) -> Result<Vec<P::Vector>, SplineError> {
+    if closed {
+        check_loop_neighbours(points, 3)?;
+    } else {
+        check_neighbours(points, 3)?;
+    }
+    let mut vs: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
+    if closed {
+        vs.push(vs[0].clone());
+    }
+    Ok(vs)
+}
+
+/// The errors of edge `index` of `edges` edges: the closing edge of a loop has its own.
+fn edge_error(index: usize, edges: usize, closed: bool, antipodal: bool) -> SplineError {
+    match (closed && index + 1 == edges, antipodal) {
+        (true, true) => SplineError::AntipodalClosing,
+        (true, false) => SplineError::CoincidentClosing,
+        (false, true) => SplineError::Antipodal { index },
+        (false, false) => SplineError::Coincident { index },
+    }
+}
+
 impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
-    /// `points` are the polyline's vertices `P_0 … P_M`, `edges[j]` the flow and angle of edge
-    /// `P_j → P_{j+1}`.
+    /// `points` are the polyline's vertices `P_0 … P_M` (a closed polygon's with `P_M = P_0`),
+    /// `edges[j]` the flow and angle of edge `P_j → P_{j+1}`.
+    ///
+    /// Open: the straight part of edge 0 from `P_0`, corner 1, …, the straight part of the last
+    /// edge to `P_M`. Closed: a corner at every vertex, the curve starting where the corner at
+    /// `P_0` ends on edge 0 (the cut `Q_0⁺`) and returning there after the corner at `P_0`; the
+    /// speed factor `ω` is multiplied by `β_j/α_j = Θ_j/Θ_{j−1}` at each corner, a product that
+    /// telescopes to 1 around the loop, so the seam is traversed at the speed it starts with.
     fn build(
         points: &[V],
         edges: Vec<(F, f64)>,
         order: usize,
         fraction: f64,
+        closed: bool,
     ) -> Result<Self, SplineError> {
         let poly = check_order(order)?;
         check_fraction(fraction)?;
@@ -61,11 +94,14 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
         };
         for (j, (flow, theta)) in edges.iter().enumerate() {
             // Straight part of edge j: from Q_j⁺ (or P_0) to Q_{j+1}⁻ (or P_M).
-            let cut_start = if j == 0 { 0.0 } else { fraction * theta };
-            let straight = if j == 0 || j + 1 == m {
-                (1.0 - fraction) * theta
+            let (cut_start, straight) = if closed {
+                (fraction * theta, (1.0 - 2.0 * fraction) * theta)
+            } else if j == 0 {
+                (0.0, (1.0 - fraction) * theta)
+            } else if j + 1 == m {
+                (fraction * theta, (1.0 - fraction) * theta)
             } else {
-                (1.0 - 2.0 * fraction) * theta
+                (fraction * theta, (1.0 - 2.0 * fraction) * theta)
             };
             if straight > 0.0 {
                 push(
@@ -80,9 +116,9 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
                     &mut t,
                 );
             }
-            if j + 1 < m {
+            if closed || j + 1 < m {
                 // Corner at P_{j+1}: α = incoming cut on edge j, β = outgoing cut on edge j+1.
-                let (next, next_theta) = &edges[j + 1];
+                let (next, next_theta) = &edges[(j + 1) % m];
                 let alpha = fraction * theta;
                 let beta = fraction * next_theta;
                 push(
@@ -105,6 +141,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
             s.width = knots.width(i);
         }
         Ok(Self {
+            closed,
             knots,
             poly,
             fraction,
@@ -205,16 +242,57 @@ impl<P: Manifold> CornerBlend<P> {
     /// - [`SplineError::Coincident`] / [`SplineError::Antipodal`] for coincident or antipodal
     ///   consecutive points (no unique great-circle edge).
     pub fn try_new(points: Vec<P>, order: usize, fraction: f64) -> Result<Self, SplineError> {
-        check_neighbours(&points, 3)?;
-        let vs: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
+        Self::build(points, order, fraction, false)
+    }
+
+    /// Smooths every corner of the closed polygon `P₀ → P₁ → … → P_{m−1} → P₀` (m ≥ 3), the
+    /// one at `P₀` included. The loop starts where the corner at `P₀` ends on the first edge
+    /// and returns there: it is Cⁿ at the seam as everywhere else (the speed factors telescope
+    /// around the loop, `∏ Θ_j/Θ_{j−1} = 1`), and it follows the polygon's edges exactly
+    /// outside the corner blends. It does not pass through the vertices.
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new), and [`SplineError::CoincidentClosing`] /
+    /// [`SplineError::AntipodalClosing`] for a coincident or antipodal last and first point.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, CornerBlend, Curve, Manifold, S2Point};
+    ///
+    /// let c = CornerBlend::try_new_closed(vec![S2Point::X, S2Point::Y, S2Point::Z], 3, 0.25).unwrap();
+    /// let [t0, t1] = c.domain();
+    /// assert!(c.eval(t1).dist(&c.eval(t0)) < 1e-15);
+    /// // Every corner is blended: 3 straight parts and 3 corners, the seam the last joint.
+    /// let report = continuity(&c);
+    /// assert_eq!(report.len(), 6);
+    /// assert!(report.iter().all(|j| j.c1 < 1e-12 && j.c2 < 1e-11));
+    /// ```
+    pub fn try_new_closed(
+        points: Vec<P>,
+        order: usize,
+        fraction: f64,
+    ) -> Result<Self, SplineError> {
+        Self::build(points, order, fraction, true)
+    }
+
+    fn build(
+        points: Vec<P>,
+        order: usize,
+        fraction: f64,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let vs = polyline(&points, closed)?;
+        let count = vs.len() - 1;
         let edges = vs
             .windows(2)
             .enumerate()
             .map(|(index, w)| {
-                let (theta, e) =
-                    geodesic_frame(&w[0], &w[1]).ok_or(SplineError::Antipodal { index })?;
+                let (theta, e) = geodesic_frame(&w[0], &w[1])
+                    .ok_or_else(|| edge_error(index, count, closed, true))?;
                 if theta <= 0.0 {
-                    return Err(SplineError::Coincident { index });
+                    return Err(edge_error(index, count, closed, false));
                 }
                 Ok((
                     PlaneRotation {
@@ -225,7 +303,7 @@ impl<P: Manifold> CornerBlend<P> {
                 ))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let core = CornerCore::build(&vs, edges, order, fraction)?;
+        let core = CornerCore::build(&vs, edges, order, fraction, closed)?;
         Ok(Self { points, core })
     }
 
@@ -269,6 +347,10 @@ impl<P: Manifold> Curve for CornerBlend<P> {
 
     fn joints(&self) -> &[f64] {
         self.core.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.core.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
@@ -354,23 +436,46 @@ impl CornerBlendS3 {
         order: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
-        check_neighbours(&points, 3)?;
-        let vs: Vec<DVec4> = points.iter().map(Manifold::to_vector).collect();
+        Self::build(points, order, fraction, false)
+    }
+
+    /// Smooths every corner of the closed orientation polygon `q₀ → … → q_{m−1} → q₀`, as
+    /// [`CornerBlend::try_new_closed`] does on the sphere.
+    ///
+    /// # Errors
+    ///
+    /// As [`CornerBlend::try_new_closed`].
+    pub fn try_new_closed(
+        points: Vec<UnitQuat>,
+        order: usize,
+        fraction: f64,
+    ) -> Result<Self, SplineError> {
+        Self::build(points, order, fraction, true)
+    }
+
+    fn build(
+        points: Vec<UnitQuat>,
+        order: usize,
+        fraction: f64,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let vs = polyline(&points, closed)?;
+        let count = vs.len() - 1;
         let edges = vs
             .windows(2)
             .enumerate()
             .map(|(index, w)| {
-                let (theta, e) =
-                    geodesic_frame(&w[0], &w[1]).ok_or(SplineError::Antipodal { index })?;
+                let (theta, e) = geodesic_frame(&w[0], &w[1])
+                    .ok_or_else(|| edge_error(index, count, closed, true))?;
                 if theta <= 0.0 {
-                    return Err(SplineError::Coincident { index });
+                    return Err(edge_error(index, count, closed, false));
                 }
                 // e ⊥ q, so e·q̄ is a pure unit quaternion n with e = n·q.
                 let n = (DQuat::from_vec4(e) * DQuat::from_vec4(w[0]).conjugate()).xyz();
                 Ok((LeftMultiplication { axis: n }, theta))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let core = CornerCore::build(&vs, edges, order, fraction)?;
+        let core = CornerCore::build(&vs, edges, order, fraction, closed)?;
         Ok(Self { points, core })
     }
 
@@ -414,6 +519,10 @@ impl Curve for CornerBlendS3 {
 
     fn joints(&self) -> &[f64] {
         self.core.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.core.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {

@@ -500,6 +500,10 @@ impl<P: Manifold> Curve for CubicSpline<P> {
         self.knots.as_slice()
     }
 
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, s) = self.knots.locate(t, side);
         self.jet_local(i, s)

@@ -55,6 +55,14 @@ pub trait Curve: core::fmt::Debug {
     /// domain, increasing. A one-piece curve returns `[t0, t1]`.
     fn joints(&self) -> &[f64];
 
+    /// Whether the curve is a closed loop: it ends where it starts, `c(t1) = c(t0)`, and the
+    /// seam `t1 ≡ t0` is a joint like the others, as smooth as the construction is at its
+    /// interior joints ([`continuity`](crate::continuity) reports it last). `false` unless the
+    /// curve was built closed.
+    fn is_closed(&self) -> bool {
+        false
+    }
+
     /// The point and derivatives at `t`; at a joint, the one-sided limit from `side`.
     fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point>;
 

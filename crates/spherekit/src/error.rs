@@ -146,6 +146,30 @@ pub enum SplineError {
     /// The last and the first point of a closed curve are antipodal: the closing geodesic is
     /// not unique.
     AntipodalClosing,
+    /// The last and the first point of a closed curve coincide where the construction needs
+    /// distinct consecutive points.
+    CoincidentClosing,
+    /// Points `first` and `last` of the triple `first, middle, last` of a closed loop (whose
+    /// indices wrap around the end) coincide, so no unique circle passes through the triple
+    /// (circle-blending methods; [`SplineError::NoCircle`] for a triple that does not wrap).
+    NoCircleAround {
+        /// The first point of the triple.
+        first: usize,
+        /// The middle point.
+        middle: usize,
+        /// The last point (equal to the first).
+        last: usize,
+    },
+    /// The requested [`ArcBlendTiming`](crate::ArcBlendTiming) has no knots that close a loop:
+    /// the book's spacings, carried around by the ratios `ψ/φ`, come back to the first spacing
+    /// multiplied by `ratio` instead of 1 (they close only when the ratios multiply to 1, for
+    /// example for points on one circle). The other timings close every loop.
+    TimingNotClosed {
+        /// `"book"`.
+        timing: &'static str,
+        /// The product of the ratios `ψ_j/φ_j` around the loop.
+        ratio: f64,
+    },
     /// A clamped end velocity cannot be used.
     InvalidEndVelocity {
         /// `true` for the velocity at the first key, `false` for the one at the last key.
@@ -231,6 +255,21 @@ impl fmt::Display for SplineError {
             }
             Self::AntipodalClosing => f.write_str(
                 "the last and the first point are antipodal: the closing geodesic is not unique",
+            ),
+            Self::CoincidentClosing => f.write_str(
+                "the last and the first point coincide: this method needs distinct consecutive points, the closing pair of a loop included",
+            ),
+            Self::NoCircleAround {
+                first,
+                middle,
+                last,
+            } => write!(
+                f,
+                "points {first} and {last} coincide: no unique circle passes through points {first}, {middle} and {last} of the loop"
+            ),
+            Self::TimingNotClosed { timing, ratio } => write!(
+                f,
+                "the {timing} knots do not close the loop: the ratios ψ/φ of the circles around it multiply to {ratio:.6} instead of 1 (only points on one circle close); use the auto, arc-length or uniform timing, which trace the same curve"
             ),
             Self::InvalidEndVelocity { start, reason } => {
                 let which = if *start { "start" } else { "end" };

@@ -244,6 +244,10 @@ impl<C: Curve> Curve for Extrapolated<C> {
         self.curve.joints()
     }
 
+    fn is_closed(&self) -> bool {
+        self.curve.is_closed()
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<C::Point> {
         match self.try_jet_at(t, side) {
             Ok(jet) => jet,

@@ -23,6 +23,28 @@ pub(crate) fn check_chain<P: Manifold>(points: &[P], min: usize) -> Result<(), S
     }
 }
 
+/// The fewest points of a closed loop (two points would make a loop that doubles back on
+/// itself).
+pub(crate) const MIN_LOOP_POINTS: usize = 3;
+
+/// Checks a closed loop: at least `min` points, no antipodal neighbours, and the last point not
+/// antipodal to the first ([`SplineError::AntipodalClosing`]).
+pub(crate) fn check_loop<P: Manifold>(points: &[P], min: usize) -> Result<(), SplineError> {
+    check_chain(points, min.max(MIN_LOOP_POINTS))?;
+    if points[points.len() - 1].is_antipodal(&points[0]) {
+        return Err(SplineError::AntipodalClosing);
+    }
+    Ok(())
+}
+
+/// `p₀ … pₙ₋₁, p₀`: the points of a closed loop with the first repeated at the end.
+pub(crate) fn wrapped<P: Clone>(points: &[P]) -> Vec<P> {
+    let mut out = Vec::with_capacity(points.len() + 1);
+    out.extend_from_slice(points);
+    out.push(points[0].clone());
+    out
+}
+
 /// One great-circle arc `cos(sθ)·p + sin(sθ)·e`, `s ∈ [0, 1]`, stored with its angular rate.
 #[derive(Clone, Debug)]
 struct Arc<V> {
@@ -46,7 +68,9 @@ struct Arc<V> {
 /// c″(t) = −(θᵢ/hᵢ)²·c(t)
 /// ```
 ///
-/// Each piece has constant speed θᵢ/hᵢ; the curve is C⁰ at the knots. On S³ the keys are used
+/// Each piece has constant speed θᵢ/hᵢ; the curve is C⁰ at the knots. The closed loop
+/// ([`try_new_closed`](Self::try_new_closed)) has one more piece, from `pₙ` back to `p₀` on
+/// `[uₙ, uₙ₊₁]`, and is C⁰ at the seam too. On S³ the keys are used
 /// as given (no sign flips): canonicalise them first with [`unflip`](crate::unflip) for the
 /// shortest rotations. Works on any sphere ([`S2Point`](crate::S2Point),
 /// [`UnitQuat`](crate::UnitQuat), [`SnPoint`](crate::SnPoint)).
@@ -65,9 +89,11 @@ struct Arc<V> {
 /// ```
 #[derive(Clone, Debug)]
 pub struct GeodesicSpline<P: Manifold> {
+    /// The points, and for a closed loop the first one again at the end.
     points: Vec<P>,
     knots: Knots,
     arcs: Vec<Arc<P::Vector>>,
+    closed: bool,
 }
 
 impl<P: Manifold> GeodesicSpline<P> {
@@ -80,13 +106,49 @@ impl<P: Manifold> GeodesicSpline<P> {
     pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
         check_chain(&points, 2)?;
         let knots = Knots::or_uniform(knots, points.len())?;
+        Self::build(points, knots, false)
+    }
+
+    /// Builds the closed loop `p₀ → p₁ → … → pₙ → p₀`; `knots` are `n + 2` times, one per
+    /// point and the last the time of the return to `p₀` (default `0, 1, …, n + 1`).
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 3 points, [`SplineError::Antipodal`] for
+    /// antipodal neighbours, [`SplineError::AntipodalClosing`] for an antipodal last and first
+    /// point, and the knot errors of [`Knots::or_uniform`] (`points.len() + 1` knots).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{Curve, GeodesicSpline, S2Point};
+    ///
+    /// let c = GeodesicSpline::try_new_closed(vec![S2Point::X, S2Point::Y, S2Point::Z], None).unwrap();
+    /// assert_eq!(c.domain(), [0.0, 3.0]);
+    /// assert_eq!(c.eval(3.0), S2Point::X);
+    /// assert!(c.is_closed());
+    /// ```
+    pub fn try_new_closed(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_loop(&points, MIN_LOOP_POINTS)?;
+        let knots = Knots::or_uniform(knots, points.len() + 1)?;
+        Self::build(wrapped(&points), knots, true)
+    }
+
+    /// The arcs between consecutive `points` (the loop's already wrapped).
+    fn build(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        let last = points.len() - 2;
         let arcs = points
             .windows(2)
             .enumerate()
             .map(|(i, w)| {
                 let start = w[0].to_vector();
-                let (theta, direction) = geodesic_frame(&start, &w[1].to_vector())
-                    .ok_or(SplineError::Antipodal { index: i })?;
+                let (theta, direction) = geodesic_frame(&start, &w[1].to_vector()).ok_or(
+                    if closed && i == last {
+                        SplineError::AntipodalClosing
+                    } else {
+                        SplineError::Antipodal { index: i }
+                    },
+                )?;
                 Ok(Arc {
                     start,
                     direction,
@@ -99,13 +161,20 @@ impl<P: Manifold> GeodesicSpline<P> {
             points,
             knots,
             arcs,
+            closed,
         })
     }
 
-    /// The points interpolated at the knots.
+    /// The points interpolated at the knots (for a closed loop without the repeated first one).
     #[must_use]
     pub fn points(&self) -> &[P] {
-        &self.points
+        &self.points[..self.points.len() - usize::from(self.closed)]
+    }
+
+    /// The knots (for a closed loop, one more than points: the time of the return to `p₀`).
+    #[must_use]
+    pub fn knots(&self) -> &[f64] {
+        self.knots.as_slice()
     }
 }
 
@@ -118,6 +187,10 @@ impl<P: Manifold> Curve for GeodesicSpline<P> {
 
     fn joints(&self) -> &[f64] {
         self.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
@@ -209,8 +282,10 @@ impl<P: Manifold> GeodesicSpline<P> {
 /// ```
 #[derive(Clone, Debug)]
 pub struct NlerpSpline<P: Manifold> {
+    /// The points, and for a closed loop the first one again at the end.
     points: Vec<P>,
     knots: Knots,
+    closed: bool,
 }
 
 impl<P: Manifold> NlerpSpline<P> {
@@ -222,13 +297,39 @@ impl<P: Manifold> NlerpSpline<P> {
     pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
         check_chain(&points, 2)?;
         let knots = Knots::or_uniform(knots, points.len())?;
-        Ok(Self { points, knots })
+        Ok(Self {
+            points,
+            knots,
+            closed: false,
+        })
     }
 
-    /// The points interpolated at the knots.
+    /// Builds the closed loop `p₀ → … → pₙ → p₀`, with knots as
+    /// [`GeodesicSpline::try_new_closed`] (C⁰ at the seam, like the other joints).
+    ///
+    /// # Errors
+    ///
+    /// As [`GeodesicSpline::try_new_closed`].
+    pub fn try_new_closed(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_loop(&points, MIN_LOOP_POINTS)?;
+        let knots = Knots::or_uniform(knots, points.len() + 1)?;
+        Ok(Self {
+            points: wrapped(&points),
+            knots,
+            closed: true,
+        })
+    }
+
+    /// The points interpolated at the knots (for a closed loop without the repeated first one).
     #[must_use]
     pub fn points(&self) -> &[P] {
-        &self.points
+        &self.points[..self.points.len() - usize::from(self.closed)]
+    }
+
+    /// The knots (for a closed loop, one more than points).
+    #[must_use]
+    pub fn knots(&self) -> &[f64] {
+        self.knots.as_slice()
     }
 }
 
@@ -241,6 +342,10 @@ impl<P: Manifold> Curve for NlerpSpline<P> {
 
     fn joints(&self) -> &[f64] {
         self.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {

@@ -410,6 +410,11 @@ impl Curve for BezierKim {
 /// Derivatives are exact (product rule over the three factors). Controls are used as given (no
 /// sign flips; see [`unflip`](crate::unflip)).
 ///
+/// **Closed loops** ([`try_new_closed`](Self::try_new_closed)): the periodic control polygon
+/// `q₀ … qₙ₋₁, q₀, q₁, q₂` (n ≥ 3) gives `n` pieces on `[0, n]`; the piece after the last would
+/// start at `qₙ = q₀` with the factors of piece 0, so the loop is C² at the seam `t = n ≡ 0`
+/// as everywhere else. Like the open curve it approximates the controls.
+///
 /// Source: Kim, Kim & Shin (1995), "A general construction scheme for unit quaternion curves with
 /// simple high order derivatives", SIGGRAPH '95, doi:10.1145/218380.218486.
 ///
@@ -431,10 +436,12 @@ impl Curve for BezierKim {
 /// ```
 #[derive(Clone, Debug)]
 pub struct BsplineKim {
+    /// The controls; for a closed loop followed by the first three again.
     controls: Vec<UnitQuat>,
     omegas: Vec<DVec3>,
     rates: Vec<Rate>,
     knots: Knots,
+    closed: bool,
 }
 
 impl BsplineKim {
@@ -459,19 +466,59 @@ impl BsplineKim {
             omegas,
             rates,
             knots,
+            closed: false,
         })
     }
 
-    /// The control quaternions `q₀ … qₙ`.
-    #[must_use]
-    pub fn controls(&self) -> &[UnitQuat] {
-        &self.controls
+    /// Builds the closed loop of the periodic control polygon `q₀ … qₙ₋₁` (n ≥ 3) on `[0, n]`
+    /// (type docs).
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 3 controls; [`SplineError::Antipodal`] when
+    /// consecutive controls are antipodal, [`SplineError::AntipodalClosing`] when the last and
+    /// the first are.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, glam::DVec3, Curve, BsplineKim, UnitQuat};
+    ///
+    /// let q = |x: f64, y: f64| UnitQuat::from_axis_angle(DVec3::new(x, y, 1.0), 0.8).unwrap();
+    /// let c = BsplineKim::try_new_closed(vec![q(1.0, 0.0), q(0.0, 1.0), q(-1.0, 0.0), q(0.0, -1.0)])
+    ///     .unwrap();
+    /// assert_eq!(c.domain(), [0.0, 4.0]);
+    /// let seam = continuity(&c)[3];
+    /// assert!(seam.t == 4.0 && seam.c0 < 1e-15 && seam.c1 < 1e-14 && seam.c2 < 1e-13);
+    /// ```
+    pub fn try_new_closed(controls: Vec<UnitQuat>) -> Result<Self, SplineError> {
+        crate::geodesic::check_loop(&controls, 3)?;
+        let n = controls.len();
+        let mut cyclic = controls;
+        cyclic.extend_from_within(..3);
+        let omegas = chain_logs(&cyclic)?;
+        let rates = omegas.iter().copied().map(Rate::new).collect();
+        Ok(Self {
+            controls: cyclic,
+            omegas,
+            rates,
+            knots: Knots::uniform(n + 1),
+            closed: true,
+        })
     }
 
-    /// The body-frame logarithms `ωⱼ = log(qⱼ₋₁⁻¹ qⱼ)`, j = 1..n.
+    /// The control quaternions `q₀ … qₙ` (for a closed loop the periodic polygon, without the
+    /// repeated first three).
+    #[must_use]
+    pub fn controls(&self) -> &[UnitQuat] {
+        &self.controls[..self.controls.len() - if self.closed { 3 } else { 0 }]
+    }
+
+    /// The body-frame logarithms `ωⱼ = log(qⱼ₋₁⁻¹ qⱼ)`, j = 1..n (for a closed loop every edge
+    /// of the periodic polygon, the closing one last).
     #[must_use]
     pub fn omegas(&self) -> &[DVec3] {
-        &self.omegas
+        &self.omegas[..self.omegas.len() - if self.closed { 2 } else { 0 }]
     }
 }
 
@@ -484,6 +531,10 @@ impl Curve for BsplineKim {
 
     fn joints(&self) -> &[f64] {
         self.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {

@@ -7,7 +7,7 @@ use glam::DVec4;
 
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
-use crate::geodesic::check_chain;
+use crate::geodesic::{MIN_LOOP_POINTS, check_chain, check_loop, wrapped};
 use crate::knots::Knots;
 use crate::manifold::{Manifold, renormalize};
 use crate::s3::UnitQuat;
@@ -42,6 +42,11 @@ use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec, slerp_point};
 /// is the scalar squad of the `αᵢ` with inner values `σᵢ = αᵢ + Mᵢ·v` (uniform:
 /// `αᵢ − (αᵢ₋₁ − 2αᵢ + αᵢ₊₁)/4`).
 ///
+/// **Closed loops** ([`try_new_closed`](Self::try_new_closed)): keys `q₀ … qₙ₋₁` and knots
+/// `t₀ … tₙ` (the last the time of the return to `q₀`); the keys wrap around, `q₋₁ = qₙ₋₁`,
+/// `qₙ = q₀`, `h₋₁ = hₙ₋₁`, so every key, the first included, gets an inner point `sᵢ` by the
+/// formula above and `sₙ = s₀`: the loop is C¹ at the seam as at the other keys.
+///
 /// Keys are used as given, with no sign flips anywhere: canonicalise with
 /// [`unflip`](crate::unflip) first for shortest rotations (the scene format does).
 ///
@@ -63,7 +68,9 @@ use crate::slerp_jet::{FixedArc, ScalarJet, slerp_jet_vec, slerp_point};
 /// ```
 #[derive(Clone, Debug)]
 pub struct Squad {
+    /// The keys, and for a closed loop the first one again at the end.
     keys: Vec<UnitQuat>,
+    closed: bool,
     inner: Vec<UnitQuat>,
     knots: Knots,
     /// Per segment: the arcs qᵢ → qᵢ₊₁ and sᵢ → sᵢ₊₁ and `1/hᵢ`.
@@ -93,20 +100,74 @@ impl Squad {
         let mut inner = Vec::with_capacity(n + 1);
         inner.push(keys[0]);
         for i in 1..n {
-            let q = keys[i];
-            let qc = q.conjugate();
-            let lp = qc.mul(keys[i + 1]).log();
-            let lm = qc.mul(keys[i - 1]).log();
             let (hm, hp) = (knots.width(i - 1), knots.width(i));
-            let m = (lp * hm + lm * hp) * (-0.5 / (hm + hp));
-            inner.push(q.mul(UnitQuat::exp(m)));
+            inner.push(inner_point(keys[i - 1], keys[i], keys[i + 1], hm, hp));
         }
         inner.push(keys[n]);
+        Self::build(keys, inner, knots, false)
+    }
+
+    /// Builds the closed loop through `keys = q₀ … qₙ₋₁` (n ≥ 3) with periodic neighbours
+    /// (type docs); `knots` are `n + 1` times, the last the time of the return to `q₀`
+    /// (default `0, 1, …, n`).
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 3 keys; [`SplineError::Antipodal`] for
+    /// antipodal consecutive keys (or antipodal inner points, as [`try_new`](Self::try_new));
+    /// [`SplineError::AntipodalClosing`] for an antipodal last and first key; the knot errors
+    /// of [`Knots::or_uniform`] (`n + 1` knots).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, Curve, Squad, UnitQuat};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let q = |x: f64, y: f64| UnitQuat::from_axis_angle(DVec3::new(x, y, 1.0), 0.8).unwrap();
+    /// let c = Squad::try_new_closed(vec![q(1.0, 0.0), q(0.0, 1.0), q(-1.0, 0.0), q(0.0, -1.0)], None)
+    ///     .unwrap();
+    /// assert_eq!(c.domain(), [0.0, 4.0]);
+    /// assert_eq!(c.eval(4.0), q(1.0, 0.0));
+    /// let seam = continuity(&c)[3];
+    /// assert!(seam.t == 4.0 && seam.c0 < 1e-15 && seam.c1 < 1e-12);
+    /// ```
+    pub fn try_new_closed(
+        keys: Vec<UnitQuat>,
+        knots: Option<Vec<f64>>,
+    ) -> Result<Self, SplineError> {
+        check_loop(&keys, MIN_LOOP_POINTS)?;
+        let n = keys.len();
+        let knots = Knots::or_uniform(knots, n + 1)?;
+        let mut inner: Vec<UnitQuat> = (0..n)
+            .map(|i| {
+                let prev = (i + n - 1) % n;
+                let (hm, hp) = (knots.width(prev), knots.width(i));
+                inner_point(keys[prev], keys[i], keys[(i + 1) % n], hm, hp)
+            })
+            .collect();
+        inner.push(inner[0]);
+        Self::build(wrapped(&keys), inner, knots, true)
+    }
+
+    /// The segments through `keys` (wrapped, for a loop) with the inner points `inner`.
+    fn build(
+        keys: Vec<UnitQuat>,
+        inner: Vec<UnitQuat>,
+        knots: Knots,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let n = keys.len() - 1;
         let segments = (0..n)
             .map(|i| {
                 let arc = |a: UnitQuat, b: UnitQuat| {
-                    FixedArc::try_new(a.to_vector(), b.to_vector())
-                        .ok_or(SplineError::Antipodal { index: i })
+                    FixedArc::try_new(a.to_vector(), b.to_vector()).ok_or(
+                        if closed && i + 1 == n {
+                            SplineError::AntipodalClosing
+                        } else {
+                            SplineError::Antipodal { index: i }
+                        },
+                    )
                 };
                 Ok(SquadSegment {
                     keys: arc(keys[i], keys[i + 1])?,
@@ -117,19 +178,21 @@ impl Squad {
             .collect::<Result<_, SplineError>>()?;
         Ok(Self {
             keys,
+            closed,
             inner,
             knots,
             segments,
         })
     }
 
-    /// The keys `q₀ … qₙ`.
+    /// The keys `q₀ … qₙ` (for a closed loop without the repeated first one).
     #[must_use]
     pub fn keys(&self) -> &[UnitQuat] {
-        &self.keys
+        &self.keys[..self.keys.len() - usize::from(self.closed)]
     }
 
-    /// The inner control points `s₀ … sₙ` (`s₀ = q₀`, `sₙ = qₙ`).
+    /// The inner control points `s₀ … sₙ` (open: `s₀ = q₀`, `sₙ = qₙ`; closed: one per segment
+    /// end, `sₙ = s₀`).
     #[must_use]
     pub fn controls(&self) -> &[UnitQuat] {
         &self.inner
@@ -153,6 +216,10 @@ impl Curve for Squad {
         self.knots.as_slice()
     }
 
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
         let (i, tau) = self.knots.locate(t, side);
         self.jet_local(i, tau)
@@ -172,6 +239,16 @@ impl Curve for Squad {
         self.knots
             .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
     }
+}
+
+/// `sᵢ = qᵢ·exp(Mᵢ)`, `Mᵢ = −(hᵢ₋₁·L⁺ᵢ + hᵢ·L⁻ᵢ) / (2(hᵢ₋₁ + hᵢ))` for the key `q = qᵢ` between
+/// `prev = qᵢ₋₁` and `next = qᵢ₊₁`, `hm = hᵢ₋₁`, `hp = hᵢ`.
+fn inner_point(prev: UnitQuat, q: UnitQuat, next: UnitQuat, hm: f64, hp: f64) -> UnitQuat {
+    let qc = q.conjugate();
+    let lp = qc.mul(next).log();
+    let lm = qc.mul(prev).log();
+    let m = (lp * hm + lm * hp) * (-0.5 / (hm + hp));
+    q.mul(UnitQuat::exp(m))
 }
 
 impl Squad {
