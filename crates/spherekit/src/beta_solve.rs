@@ -14,6 +14,10 @@
 //! equals the data point `pᵢ`. Row `i` involves only `d_{i-1}, d_i, d_{i+1}`, so the Jacobian
 //! is block tridiagonal with `(r−1)×(r−1)` blocks in tangent coordinates.
 //!
+//! A **closed** loop has the unknowns `d₀ … d_{m−1}` and the rows `i = 0 … m−1` with indices
+//! mod m (row 0 involves `d_{m−1}`, row m−1 involves `d₀`): the Jacobian is block cyclic
+//! tridiagonal, solved by bordering ([`block_cyclic_solve`]) in O(m) as well.
+//!
 //! The kernel computes in coordinates of an orthonormal basis of the span of the data (of
 //! dimension `r ≤ m + 1`): every slerp keeps its result in the span of its inputs, and a
 //! reflection through that span maps the problem to itself, so the solution lies in it and
@@ -273,11 +277,19 @@ pub(crate) struct System<'a, V> {
     dim: usize,
     /// Tangent bases at the data points, `r − 1` vectors per point, flat.
     data_bases: Vec<V>,
+    /// A closed loop: every vertex is unknown and the indices wrap around.
+    closed: bool,
 }
 
 impl<'a, V: Coords> System<'a, V> {
     /// The system for `data` (unit vectors in the first `rank` of `dim` coordinates).
-    pub(crate) fn new(data: &'a [V], shape: &'a Shape, rank: usize, dim: usize) -> Self {
+    pub(crate) fn new(
+        data: &'a [V],
+        shape: &'a Shape,
+        rank: usize,
+        dim: usize,
+        closed: bool,
+    ) -> Self {
         let mut data_bases = Vec::with_capacity(data.len() * (rank - 1));
         for p in data {
             push_tangent_basis(p, rank, dim, &mut data_bases);
@@ -288,6 +300,7 @@ impl<'a, V: Coords> System<'a, V> {
             rank,
             dim,
             data_bases,
+            closed,
         }
     }
 
@@ -295,10 +308,36 @@ impl<'a, V: Coords> System<'a, V> {
         self.data.len() - 1
     }
 
-    /// The junction point `q_{i,0}` for `1 ≤ i ≤ n − 1`.
+    /// The rows, which are also the unknown vertices: `1 … n−1` open, `0 … m−1` closed.
+    fn rows(&self) -> core::ops::Range<usize> {
+        if self.closed {
+            0..self.data.len()
+        } else {
+            1..self.n()
+        }
+    }
+
+    /// The block of unknown vertex `v`, if it is one.
+    fn unknown(&self, v: usize) -> Option<usize> {
+        let rows = self.rows();
+        rows.contains(&v).then(|| v - rows.start)
+    }
+
+    /// The neighbours `i − 1`, `i + 1` of vertex `i` (mod m when closed).
+    fn neighbours(&self, i: usize) -> (usize, usize) {
+        let m = self.data.len();
+        if self.closed {
+            ((i + m - 1) % m, (i + 1) % m)
+        } else {
+            (i - 1, i + 1)
+        }
+    }
+
+    /// The junction point `q_{i,0}` of row `i`.
     fn junction(&self, d: &[V], i: usize) -> Option<V> {
-        let a = slerp(&d[i - 1], &d[i], self.shape.omega[i - 1])?;
-        let b = slerp(&d[i], &d[i + 1], self.shape.eta[i])?;
+        let (prev, next) = self.neighbours(i);
+        let a = slerp(&d[prev], &d[i], self.shape.omega[prev])?;
+        let b = slerp(&d[i], &d[next], self.shape.eta[i])?;
         slerp(&a, &b, self.shape.delta[i])
     }
 
@@ -306,7 +345,7 @@ impl<'a, V: Coords> System<'a, V> {
     /// formed (antipodal points) or is not finite.
     pub(crate) fn residual(&self, d: &[V]) -> Option<(f64, f64)> {
         let (mut max, mut sum) = (0.0_f64, 0.0);
-        for i in 1..self.n() {
+        for i in self.rows() {
             let q = self.junction(d, i)?;
             if !q.is_finite() {
                 return None;
@@ -321,23 +360,22 @@ impl<'a, V: Coords> System<'a, V> {
     /// One Jacobi update of eq. (19) in the robust form of `docs/derivations.md#beta-solver`,
     /// normalised.
     pub(crate) fn jacobi_step(&self, d: &[V]) -> Option<Vec<V>> {
-        let n = self.n();
         let sh = self.shape;
-        let mut out = Vec::with_capacity(n + 1);
-        out.push(d[0].clone());
-        for i in 1..n {
-            let phi0 = angle(&d[i - 1], &d[i]);
-            let phi1 = angle(&d[i], &d[i + 1]);
-            let a = slerp(&d[i - 1], &d[i], sh.omega[i - 1])?;
-            let b = slerp(&d[i], &d[i + 1], sh.eta[i])?;
+        let mut out = d.to_vec();
+        for i in self.rows() {
+            let (prev, next) = self.neighbours(i);
+            let phi0 = angle(&d[prev], &d[i]);
+            let phi1 = angle(&d[i], &d[next]);
+            let a = slerp(&d[prev], &d[i], sh.omega[prev])?;
+            let b = slerp(&d[i], &d[next], sh.eta[i])?;
             let psi = angle(&a, &b);
             let rl = ratio_value(1.0 - sh.delta[i], psi);
             let rr = ratio_value(sh.delta[i], psi);
             let num = self.data[i].clone()
-                - d[i - 1].clone() * (rl * ratio_value(1.0 - sh.omega[i - 1], phi0))
-                - d[i + 1].clone() * (rr * ratio_value(sh.eta[i], phi1));
+                - d[prev].clone() * (rl * ratio_value(1.0 - sh.omega[prev], phi0))
+                - d[next].clone() * (rr * ratio_value(sh.eta[i], phi1));
             let den =
-                rl * ratio_value(sh.omega[i - 1], phi0) + rr * ratio_value(1.0 - sh.eta[i], phi1);
+                rl * ratio_value(sh.omega[prev], phi0) + rr * ratio_value(1.0 - sh.eta[i], phi1);
             if !(den > 0.0 && den.is_finite()) {
                 return None;
             }
@@ -346,9 +384,8 @@ impl<'a, V: Coords> System<'a, V> {
             if !(l > 0.0 && l.is_finite()) {
                 return None;
             }
-            out.push(v * (1.0 / l));
+            out[i] = v * (1.0 / l);
         }
-        out.push(d[n].clone());
         Some(out)
     }
 
@@ -422,6 +459,7 @@ impl<'a, V: Coords> System<'a, V> {
             converged = residual <= settings.residual_tolerance;
         }
         debug_assert_eq!(d.len(), n + 1, "vertex count");
+        debug_assert!(self.rows().len() <= n + 1, "row count");
         Outcome {
             d,
             iterations,
@@ -429,15 +467,14 @@ impl<'a, V: Coords> System<'a, V> {
         }
     }
 
-    /// The Newton step: tangent bases at `d₁ … dₙ₋₁` (`b = r − 1` per vertex, flat) and the
-    /// step coordinates in them (flat).
+    /// The Newton step: tangent bases at the unknown vertices (`b = r − 1` per vertex, flat)
+    /// and the step coordinates in them (flat).
     fn newton_direction(&self, d: &[V]) -> Option<(Vec<V>, Vec<f64>)> {
-        let n = self.n();
         let (r, dim) = (self.rank, self.dim);
         let b = r - 1;
-        let (bb, rows) = (b * b, n - 1);
+        let (bb, rows) = (b * b, self.rows().len());
         let mut bases = Vec::with_capacity(rows * b);
-        for x in &d[1..n] {
+        for x in &d[self.rows()] {
             push_tangent_basis(x, r, dim, &mut bases);
         }
         let sh = self.shape;
@@ -445,10 +482,11 @@ impl<'a, V: Coords> System<'a, V> {
         let mut diag = vec![0.0; rows * bb];
         let mut upper = vec![0.0; rows * bb];
         let mut rhs = vec![0.0; rows * b];
-        for i in 1..n {
-            let row = i - 1;
-            let ja = SlerpJet::new(&d[i - 1], &d[i], sh.omega[i - 1])?;
-            let jb = SlerpJet::new(&d[i], &d[i + 1], sh.eta[i])?;
+        for i in self.rows() {
+            let (prev, next) = self.neighbours(i);
+            let row = i - self.rows().start;
+            let ja = SlerpJet::new(&d[prev], &d[i], sh.omega[prev])?;
+            let jb = SlerpJet::new(&d[i], &d[next], sh.eta[i])?;
             let jq = SlerpJet::new(&ja.g, &jb.g, sh.delta[i])?;
             let p = &self.data[i];
             let (theta, u) = geodesic_frame(p, &jq.g)?;
@@ -465,23 +503,27 @@ impl<'a, V: Coords> System<'a, V> {
             };
             let blk = row * bb..(row + 1) * bb;
             for l in 0..b {
-                if i > 1 {
-                    let t = &bases[(i - 2) * b + l];
+                if let Some(at) = self.unknown(prev) {
+                    let t = &bases[at * b + l];
                     put(&mut lower[blk.clone()], l, &jq.push_a(&ja.push_a(t)));
                 }
-                let t = &bases[(i - 1) * b + l];
+                let t = &bases[row * b + l];
                 put(
                     &mut diag[blk.clone()],
                     l,
                     &(jq.push_a(&ja.push_b(t)) + jq.push_b(&jb.push_a(t))),
                 );
-                if i + 1 < n {
-                    let t = &bases[i * b + l];
+                if let Some(at) = self.unknown(next) {
+                    let t = &bases[at * b + l];
                     put(&mut upper[blk.clone()], l, &jq.push_b(&jb.push_b(t)));
                 }
             }
         }
-        let x = block_tridiagonal_solve(b, &lower, &diag, &upper, &rhs)?;
+        let x = if self.closed {
+            block_cyclic_solve(b, &lower, &diag, &upper, &rhs)?
+        } else {
+            block_tridiagonal_solve(b, &lower, &diag, &upper, &rhs)?
+        };
         x.iter().all(|v| v.is_finite()).then_some((bases, x))
     }
 
@@ -496,14 +538,14 @@ impl<'a, V: Coords> System<'a, V> {
     ) -> Option<(Vec<V>, (f64, f64))> {
         /// No vertex moves more than this many radians in one step.
         const MAX_STEP: f64 = 1.0;
-        let n = self.n();
         let b = self.rank - 1;
-        let mut steps: Vec<V> = Vec::with_capacity(n - 1);
+        let rows = self.rows();
+        let mut steps: Vec<V> = Vec::with_capacity(rows.len());
         let mut longest = 0.0_f64;
-        for j in 1..n {
+        for (row, j) in rows.clone().enumerate() {
             let mut v = d[j].zeros_like();
             for l in 0..b {
-                v += bases[(j - 1) * b + l].clone() * x[(j - 1) * b + l];
+                v += bases[row * b + l].clone() * x[row * b + l];
             }
             longest = longest.max(v.length());
             steps.push(v);
@@ -514,12 +556,10 @@ impl<'a, V: Coords> System<'a, V> {
             1.0
         };
         while lambda >= 1e-6 {
-            let mut next = Vec::with_capacity(n + 1);
-            next.push(d[0].clone());
-            for j in 1..n {
-                next.push(exp(&d[j], &(steps[j - 1].clone() * lambda)));
+            let mut next = d.to_vec();
+            for (row, j) in rows.clone().enumerate() {
+                next[j] = exp(&d[j], &(steps[row].clone() * lambda));
             }
-            next.push(d[n].clone());
             if let Some((max, m2)) = self.residual(&next) {
                 // φ = ½ Σθ² has directional derivative −2φ along the full Newton step.
                 if m2 <= merit2 * (1.0 - 2e-4 * lambda) {
@@ -662,6 +702,73 @@ pub(crate) fn block_tridiagonal_solve(
     Some(x)
 }
 
+/// Solves a block cyclic tridiagonal system with `b×b` blocks: row `i` is
+/// `Lᵢ·x_{i−1} + Dᵢ·xᵢ + Uᵢ·x_{i+1} = rᵢ` with indices mod R (R ≥ 3 rows; `L₀` couples `x_{R−1}`
+/// and `U_{R−1}` couples `x₀`). Bordering: with `T` the tridiagonal part of rows `0 … R−2` and
+/// `C` its column to `x_{R−1}` (`L₀` in row 0, `U_{R−2}` in row R−2), `T·y = r'` and `T·Z = C`
+/// give `x' = y − Z·x_{R−1}`, and the last row becomes the `b×b` system
+/// `(D_{R−1} − L_{R−1}Z_{R−2} − U_{R−1}Z₀)·x_{R−1} = r_{R−1} − L_{R−1}y_{R−2} − U_{R−1}y₀`.
+/// O(R·b⁴).
+pub(crate) fn block_cyclic_solve(
+    b: usize,
+    lower: &[f64],
+    diag: &[f64],
+    upper: &[f64],
+    rhs: &[f64],
+) -> Option<Vec<f64>> {
+    let bb = b * b;
+    let rows = rhs.len() / b;
+    if rows < 3 {
+        return None;
+    }
+    let inner = rows - 1;
+    let (tl, td, tu) = (
+        &lower[..inner * bb],
+        &diag[..inner * bb],
+        &upper[..inner * bb],
+    );
+    let y = block_tridiagonal_solve(b, tl, td, tu, &rhs[..inner * b])?;
+    // Z column by column: z[c] is the solution for column c of C.
+    let mut z = Vec::with_capacity(b);
+    for c in 0..b {
+        let mut col = vec![0.0; inner * b];
+        for r in 0..b {
+            col[r] = lower[r * b + c];
+            col[(inner - 1) * b + r] += upper[(inner - 1) * bb + r * b + c];
+        }
+        z.push(block_tridiagonal_solve(b, tl, td, tu, &col)?);
+    }
+    let (l_last, d_last, u_last) = (
+        &lower[inner * bb..rows * bb],
+        &diag[inner * bb..rows * bb],
+        &upper[inner * bb..rows * bb],
+    );
+    let mut m = d_last.to_vec();
+    let mut v: Vec<f64> = rhs[inner * b..].to_vec();
+    for r in 0..b {
+        for k in 0..b {
+            let (lk, uk) = (l_last[r * b + k], u_last[r * b + k]);
+            v[r] -= lk * y[(inner - 1) * b + k] + uk * y[k];
+            for (c, zc) in z.iter().enumerate() {
+                m[r * b + c] -= lk * zc[(inner - 1) * b + k] + uk * zc[k];
+            }
+        }
+    }
+    dense_solve(b, &mut m, &mut v, 1)?;
+    let mut x = Vec::with_capacity(rows * b);
+    for i in 0..inner {
+        for r in 0..b {
+            let mut s = y[i * b + r];
+            for (c, zc) in z.iter().enumerate() {
+                s -= zc[i * b + r] * v[c];
+            }
+            x.push(s);
+        }
+    }
+    x.extend_from_slice(&v);
+    Some(x)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -764,6 +871,44 @@ mod tests {
                     assert!(a.z == 0.0 && a.w == 0.0, "stays in the active span");
                 }
             }
+        }
+    }
+
+    #[test]
+    fn block_cyclic_matches_dense() {
+        // 4 rows of 2×2 blocks with corner couplings, diagonally dominant.
+        let (b, rows) = (2, 4);
+        let mut seed = 7_u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let mut blocks = |scale: f64, diagonal: f64| -> Vec<f64> {
+            (0..rows * 4)
+                .map(|k| {
+                    let on = k % 4 == 0 || k % 4 == 3;
+                    scale * next() + if on { diagonal } else { 0.0 }
+                })
+                .collect()
+        };
+        let (lower, diag, upper) = (blocks(1.0, 0.0), blocks(1.0, 5.0), blocks(1.0, 0.0));
+        let x_true = [1.0, -2.0, 0.5, 3.0, -1.5, 2.5, 0.25, -0.75];
+        let mut rhs = [0.0; 8];
+        for i in 0..rows {
+            let (p, q) = ((i + rows - 1) % rows, (i + 1) % rows);
+            for r in 0..b {
+                let mut s = 0.0;
+                for c in 0..b {
+                    s += diag[i * 4 + r * 2 + c] * x_true[i * 2 + c]
+                        + lower[i * 4 + r * 2 + c] * x_true[p * 2 + c]
+                        + upper[i * 4 + r * 2 + c] * x_true[q * 2 + c];
+                }
+                rhs[i * 2 + r] = s;
+            }
+        }
+        let x = block_cyclic_solve(b, &lower, &diag, &upper, &rhs).unwrap();
+        for (a, e) in x.iter().zip(x_true) {
+            assert!((a - e).abs() < 1e-13, "{a} vs {e}");
         }
     }
 

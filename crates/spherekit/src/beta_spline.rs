@@ -280,6 +280,17 @@ pub struct SolveInfo {
 /// n = 1000 and neighbours 10°–60° apart, Newton takes 5 iterations and about 4 ms in a release
 /// build, Jacobi about 105 iterations and 35 ms (`examples/beta_timing.rs`); both are linear in n.
 ///
+/// # Closed loops
+///
+/// [`try_new_closed`](Self::try_new_closed): the points `p₀ … p_{m−1}` (m ≥ 3) and every
+/// index wrap around (`d_m = d₀`, `β₁,m = β₁,₀`): `m` arcs `d_j d_{j+1}` cut as above, a
+/// junction `q_{i,0} = G[q_{i−1,2}, q_{i,1}](1/(1 + β₁ᵢ))` at every vertex, `q_{0,0}` included,
+/// and `m` segments on `[0, m]` with `X(m) = X(0) = q_{0,0}`. Interpolating, the periodic system
+/// `q_{i,0}(d_{i−1}, dᵢ, d_{i+1}) = pᵢ`, `i = 0 … m−1` (indices mod m, every `dᵢ` unknown),
+/// is solved by the same Newton method on its block cyclic tridiagonal Jacobian (bordering,
+/// O(m)), or by the Jacobi iteration on all vertices. The seam is a joint like the others: G¹
+/// with `X′(0⁺) = β₁,₀·X′(m⁻)`.
+///
 /// # Double cover
 ///
 /// On S³ the points are used as given; canonicalise with [`unflip`](crate::unflip) first.
@@ -315,6 +326,7 @@ pub struct BetaSpline<P: Manifold> {
     joints: Vec<f64>,
     info: Option<SolveInfo>,
     segments: Vec<CubicSegment<P>>,
+    closed: bool,
 }
 
 impl<P: Manifold> BetaSpline<P> {
@@ -335,9 +347,44 @@ impl<P: Manifold> BetaSpline<P> {
     ///   allowed);
     /// - [`SplineError::Solve`] when the interpolation solver does not reach its tolerance.
     pub fn try_new(points: Vec<P>, params: &BetaParams) -> Result<Self, SplineError> {
-        if points.len() < 2 {
+        Self::build(points, params, false)
+    }
+
+    /// Builds the closed loop through `points` (data points, or the periodic polygon of
+    /// auxiliary vertices when `params.interpolate` is `false`), m ≥ 3, on `[0, m]` (type docs,
+    /// *Closed loops*).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new), with at least 3 points, and
+    /// [`SplineError::AntipodalClosing`] / [`SplineError::CoincidentClosing`] for an antipodal
+    /// (or, when interpolating, coincident) last and first point.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, BetaParams, BetaSpline, Curve, Manifold, S2Point};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let p = |x, y, z| S2Point::try_new(DVec3::new(x, y, z)).unwrap();
+    /// let data = vec![p(1.0, 0.0, 0.2), p(0.0, 1.0, 0.4), p(-1.0, 0.1, 0.3), p(0.1, -1.0, 0.1)];
+    /// let c = BetaSpline::try_new_closed(data.clone(), &BetaParams::default()).unwrap();
+    /// assert_eq!(c.domain(), [0.0, 4.0]);
+    /// for (i, d) in data.iter().enumerate() {
+    ///     assert!(c.eval(i as f64).dist(d) < 1e-12);
+    /// }
+    /// let seam = continuity(&c)[3]; // β₁ = 1: C¹ at the seam
+    /// assert!(seam.t == 4.0 && seam.c0 < 1e-12 && seam.c1 < 1e-9);
+    /// ```
+    pub fn try_new_closed(points: Vec<P>, params: &BetaParams) -> Result<Self, SplineError> {
+        Self::build(points, params, true)
+    }
+
+    fn build(points: Vec<P>, params: &BetaParams, closed: bool) -> Result<Self, SplineError> {
+        let min = if closed { 3 } else { 2 };
+        if points.len() < min {
             return Err(SplineError::TooFewPoints {
-                min: 2,
+                min,
                 got: points.len(),
             });
         }
@@ -373,6 +420,10 @@ impl<P: Manifold> BetaSpline<P> {
         if let Some(index) = points.windows(2).position(|w| w[0].is_antipodal(&w[1])) {
             return Err(SplineError::Antipodal { index });
         }
+        let (first, last) = (&points[0], &points[count - 1]);
+        if closed && last.is_antipodal(first) {
+            return Err(SplineError::AntipodalClosing);
+        }
         if params.interpolate
             && let Some(index) = points
                 .windows(2)
@@ -380,12 +431,15 @@ impl<P: Manifold> BetaSpline<P> {
         {
             return Err(SplineError::Coincident { index });
         }
+        if params.interpolate && closed && last.dist(first) <= COINCIDENT_TOLERANCE {
+            return Err(SplineError::CoincidentClosing);
+        }
         let gamma: Vec<f64> = beta1
             .iter()
             .zip(&beta2)
             .map(|(&b1, &b2)| gamma(b1, b2))
             .collect();
-        let shape = shape_constants(&beta1, &gamma);
+        let shape = shape_constants(&beta1, &gamma, closed);
         let in_unit = |v: &f64| (0.0..=1.0).contains(v);
         if !(shape.eta.iter().all(in_unit)
             && shape.omega.iter().all(in_unit)
@@ -405,10 +459,11 @@ impl<P: Manifold> BetaSpline<P> {
                 residual_tolerance: 0.25 * residual_tolerance,
                 max_iterations,
             };
-            let (aux, iterations) = solve(&points, &shape, solver, settings)?;
-            let controls = control_points(&aux, &shape);
+            let (aux, iterations) = solve(&points, &shape, solver, settings, closed)?;
+            let controls = control_points(&aux, &shape, closed);
+            let rows = if closed { 0..count } else { 1..count - 1 };
             let residual = match &controls {
-                Ok(c) => (1..count - 1)
+                Ok(c) => rows
                     .map(|i| c[3 * i].dist(&points[i]))
                     .fold(0.0_f64, f64::max),
                 Err(_) => f64::INFINITY,
@@ -442,12 +497,14 @@ impl<P: Manifold> BetaSpline<P> {
         } else {
             (points.clone(), None)
         };
-        let controls = control_points(&aux, &shape).map_err(|index| {
+        let controls = control_points(&aux, &shape, closed).map_err(|index| {
             if info.is_some() {
                 SplineError::Solve(SolveError::NoConvergence {
                     iterations: info.map_or(0, |i| i.iterations),
                     residual: f64::INFINITY,
                 })
+            } else if closed && index + 1 == count {
+                SplineError::AntipodalClosing
             } else {
                 SplineError::Antipodal { index }
             }
@@ -473,8 +530,9 @@ impl<P: Manifold> BetaSpline<P> {
             beta1,
             beta2,
             gamma,
-            joints: (0..count).map(|i| i as f64).collect(),
+            joints: (0..count + usize::from(closed)).map(|i| i as f64).collect(),
             info,
+            closed,
         })
     }
 
@@ -484,7 +542,7 @@ impl<P: Manifold> BetaSpline<P> {
         &self.points
     }
 
-    /// The auxiliary control vertices `d₀ … dₙ`.
+    /// The auxiliary control vertices `d₀ … dₙ` (closed: the periodic polygon, one per point).
     #[must_use]
     pub fn auxiliary(&self) -> &[P] {
         &self.aux
@@ -518,10 +576,10 @@ impl<P: Manifold> BetaSpline<P> {
         &self.segments[i]
     }
 
-    /// The number of segments `n`.
+    /// The number of segments `n` (closed: one per point).
     #[must_use]
     pub fn segment_count(&self) -> usize {
-        self.points.len() - 1
+        self.points.len() - usize::from(!self.closed)
     }
 
     /// β₁ at each point.
@@ -558,6 +616,10 @@ impl<P: Manifold> Curve for BetaSpline<P> {
 
     fn joints(&self) -> &[f64] {
         &self.joints
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
@@ -614,12 +676,15 @@ fn gamma(b1: f64, b2: f64) -> f64 {
     2.0 * (b1 + 1.0) / (b2 + 2.0 * b1 * (b1 + 1.0))
 }
 
-/// `η, ω` per arc and `δ` per point (`docs/derivations.md#beta-system`).
-fn shape_constants(beta1: &[f64], gamma: &[f64]) -> Shape {
-    let arcs = beta1.len() - 1;
+/// `η, ω` per arc and `δ` per point (`docs/derivations.md#beta-system`); a closed loop has the
+/// arc `d_{m−1} d₀` too.
+fn shape_constants(beta1: &[f64], gamma: &[f64], closed: bool) -> Shape {
+    let m = beta1.len();
+    let arcs = if closed { m } else { m - 1 };
     let (mut eta, mut omega) = (Vec::with_capacity(arcs), Vec::with_capacity(arcs));
     for j in 0..arcs {
-        let den = gamma[j] + 1.0 + beta1[j + 1] * beta1[j + 1] * gamma[j + 1];
+        let k = (j + 1) % m;
+        let den = gamma[j] + 1.0 + beta1[k] * beta1[k] * gamma[k];
         eta.push(gamma[j] / den);
         omega.push((gamma[j] + 1.0) / den);
     }
@@ -627,29 +692,36 @@ fn shape_constants(beta1: &[f64], gamma: &[f64]) -> Shape {
     Shape { eta, omega, delta }
 }
 
-/// The `3n + 1` control points from the auxiliary vertices; `Err(index)` of the first
-/// antipodal pair of auxiliary vertices (or of a junction whose neighbours are antipodal).
-fn control_points<P: Manifold>(d: &[P], shape: &Shape) -> Result<Vec<P>, usize> {
-    let n = d.len() - 1;
+/// The `3n + 1` control points from the auxiliary vertices (closed: `3m + 1`, the last equal to
+/// the first); `Err(index)` of the first antipodal pair of auxiliary vertices (or of a junction
+/// whose neighbours are antipodal).
+fn control_points<P: Manifold>(d: &[P], shape: &Shape, closed: bool) -> Result<Vec<P>, usize> {
+    let m = d.len();
+    let n = if closed { m } else { m - 1 };
     let mut inner = Vec::with_capacity(2 * n);
     for i in 0..n {
-        let a = d[i].try_slerp(&d[i + 1], shape.eta[i]).ok_or(i)?;
-        let b = d[i].try_slerp(&d[i + 1], shape.omega[i]).ok_or(i)?;
+        let next = &d[(i + 1) % m];
+        let a = d[i].try_slerp(next, shape.eta[i]).ok_or(i)?;
+        let b = d[i].try_slerp(next, shape.omega[i]).ok_or(i)?;
         inner.push([a, b]);
     }
+    let junction = |i: usize| {
+        let prev = (i + n - 1) % n;
+        inner[prev][1]
+            .try_slerp(&inner[i][0], shape.delta[i])
+            .ok_or(i)
+    };
+    let first = if closed { junction(0)? } else { d[0].clone() };
     let mut out = Vec::with_capacity(3 * n + 1);
-    out.push(d[0].clone());
+    out.push(first.clone());
     for i in 0..n {
         out.push(inner[i][0].clone());
         out.push(inner[i][1].clone());
         if i + 1 < n {
-            let j = inner[i][1]
-                .try_slerp(&inner[i + 1][0], shape.delta[i + 1])
-                .ok_or(i + 1)?;
-            out.push(j);
+            out.push(junction(i + 1)?);
         }
     }
-    out.push(d[n].clone());
+    out.push(if closed { first } else { d[n].clone() });
     Ok(out)
 }
 
@@ -695,6 +767,7 @@ fn solve<P: Manifold>(
     shape: &Shape,
     solver: BetaSolver,
     settings: Settings,
+    closed: bool,
 ) -> Result<(Vec<P>, usize), SplineError> {
     let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
     let basis = span_basis(&vectors);
@@ -712,25 +785,28 @@ fn solve<P: Manifold>(
         .map(|v| basis.iter().map(|b| b.dot(v)).collect())
         .collect();
     let (d, iterations, residual) = match rank {
-        0..=3 => run::<DVec3>(&coords, rank, 3, shape, solver, settings),
-        4 => run::<DVec4>(&coords, rank, 4, shape, solver, settings),
-        _ => run::<VecN>(&coords, rank, rank, shape, solver, settings),
+        0..=3 => run::<DVec3>(&coords, rank, 3, shape, solver, settings, closed),
+        4 => run::<DVec4>(&coords, rank, 4, shape, solver, settings, closed),
+        _ => run::<VecN>(&coords, rank, rank, shape, solver, settings, closed),
     };
     let fail = SolveError::NoConvergence {
         iterations,
         residual,
     };
+    // Open curves keep their end points; every vertex of a loop was solved for.
     let n = points.len() - 1;
     let mut aux = Vec::with_capacity(n + 1);
-    aux.push(points[0].clone());
-    for c in &d[1..n] {
+    for (i, c) in d.iter().enumerate() {
+        if !closed && (i == 0 || i == n) {
+            aux.push(points[i].clone());
+            continue;
+        }
         let mut v = vectors[0].zeros_like();
         for (b, &x) in basis.iter().zip(c) {
             v += b.clone() * x;
         }
         aux.push(P::try_from_vector(v).map_err(|_| fail.clone())?);
     }
-    aux.push(points[n].clone());
     Ok((aux, iterations))
 }
 
@@ -743,6 +819,7 @@ fn run<V: Coords>(
     shape: &Shape,
     solver: BetaSolver,
     settings: Settings,
+    closed: bool,
 ) -> (Vec<Vec<f64>>, usize, f64) {
     let data: Vec<V> = coords
         .iter()
@@ -752,7 +829,7 @@ fn run<V: Coords>(
             v * (1.0 / l)
         })
         .collect();
-    let system = System::new(&data, shape, rank, dim);
+    let system = System::new(&data, shape, rank, dim, closed);
     let out = match solver {
         BetaSolver::Newton => system.solve_newton(settings),
         BetaSolver::Jacobi => system.solve_jacobi(settings),

@@ -97,7 +97,12 @@ fn stencil<'a, P>(points: &'a [P], knots: &Knots, closed: bool) -> Vec<(&'a P, &
                 let w = knots.width(prev) + knots.width(k % n);
                 (&points[k % n], &points[prev], &points[next], w)
             } else {
-                (&points[k + 1], &points[k], &points[k + 2], ext[k + 2] - ext[k])
+                (
+                    &points[k + 1],
+                    &points[k],
+                    &points[k + 2],
+                    ext[k + 2] - ext[k],
+                )
             }
         })
         .collect()

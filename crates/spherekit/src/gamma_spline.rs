@@ -8,7 +8,7 @@ use glam::{DQuat, DVec3};
 
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
-use crate::geodesic::check_chain;
+use crate::geodesic::{check_chain, check_loop, wrapped};
 use crate::kim::{Factor, Rate, body_log, cubic_bezier_basis, cumulative_jet, cumulative_point};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
@@ -143,6 +143,24 @@ pub struct GammaJoint {
 /// - `l = 1` (four vertices, no γ) is not covered by the paper; the boundary convention gives
 ///   `bₖ = dₖ`, i.e. Kim's cubic on `d₀ … d₃`, which is what is built.
 ///
+/// # Closed loops
+///
+/// [`try_new_closed`](Self::try_new_closed) takes a periodic polygon `d₀ … d_{m−1}` (m ≥ 3), knots
+/// `u₀ < … < u_m` (the last the time of the return) and one `γₖ` per knot `u₀ … u_{m−1}` (`γ₀`
+/// at the seam). Segment `k` on `[u_k, u_{k+1}]` lies on the edge `d_k d_{k+1}` and every index
+/// wraps around (`Δ₋₁ = Δ_{m−1}`, `d_m = d₀`, `γ_m = γ₀`):
+///
+/// ```text
+/// W_k  = γ_kΔ_{k−1} + Δ_k + γ_{k+1}Δ_{k+1}
+/// a_k  = G[d_k, d_{k+1}]( γ_kΔ_{k−1} / W_k ),   c_k = G[d_k, d_{k+1}]( (γ_kΔ_{k−1} + Δ_k) / W_k )
+/// J_k  = G[c_{k−1}, a_k]( Δ_{k−1} / (Δ_{k−1} + Δ_k) )
+/// segment k: Kim's cubic on J_k, a_k, c_k, J_{k+1}     (J_m = J₀)
+/// ```
+///
+/// the open rules (2)–(4) without the boundary convention. Every joint, the seam included, is
+/// then one of Theorem 1's, so the loop is C¹ at the seam as at the other knots (and C² under
+/// the same conditions). The controls are `J₀, a₀, c₀, J₁, …, c_{m−1}, J₀`.
+///
 /// No short-path rule is applied: vertices are used as given (see [`unflip`](crate::unflip)).
 ///
 /// # Examples
@@ -167,6 +185,7 @@ pub struct GammaJoint {
 #[derive(Clone, Debug)]
 pub struct GammaSpline {
     points: Vec<UnitQuat>,
+    closed: bool,
     knots: Knots,
     gamma: Vec<f64>,
     last_edge: LastEdge,
@@ -198,37 +217,56 @@ impl GammaSpline {
         check_chain(&points, 4)?;
         let l = points.len() - 3;
         let knots = Knots::or_uniform(knots, l + 1)?;
-        let gamma = match gamma {
-            Gammas::All(g) if !(g.is_finite() && g > 0.0) => {
-                return Err(SplineError::InvalidParameter {
-                    name: "gamma",
-                    reason: format!("must be finite and positive, got {g}"),
-                });
-            }
-            Gammas::All(g) => vec![g; l - 1],
-            Gammas::Each(v) if v.len() != l - 1 => {
-                return Err(SplineError::InvalidParameter {
-                    name: "gamma",
-                    reason: format!(
-                        "must have one value per interior knot ({}), got {}",
-                        l - 1,
-                        v.len()
-                    ),
-                });
-            }
-            Gammas::Each(v) => v,
-        };
-        if let Some((k, g)) = gamma
-            .iter()
-            .enumerate()
-            .find(|(_, g)| !(g.is_finite() && **g > 0.0))
-        {
-            return Err(SplineError::InvalidParameter {
-                name: "gamma",
-                reason: format!("must be finite and positive, got γ{} = {g}", k + 1),
-            });
-        }
+        let gamma = expand_gammas(gamma, l - 1, "one value per interior knot")?;
         let controls = control_vertices(&points, &knots, &gamma, last_edge)?;
+        Self::finish(points, knots, gamma, last_edge, controls, false)
+    }
+
+    /// Builds the closed loop of the periodic polygon `points = d₀ … d_{m−1}` (m ≥ 3; type docs,
+    /// *Closed loops*); `knots` are `u₀ … u_m` (default `0, 1, …, m`), `gamma` gives
+    /// `γ₀ … γ_{m−1}`, one per knot, `γ₀` at the seam.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 3 vertices; [`SplineError::Antipodal`] /
+    /// [`SplineError::AntipodalClosing`] for antipodal consecutive vertices or an antipodal last
+    /// and first; the knot errors of [`Knots::or_uniform`] (`m + 1` knots);
+    /// [`SplineError::InvalidParameter`] named `gamma` as for [`try_new`](Self::try_new), with
+    /// `m` values in a list.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, glam::DVec3, Curve, GammaSpline, Gammas, UnitQuat};
+    ///
+    /// let q = |x: f64, y: f64| UnitQuat::from_axis_angle(DVec3::new(x, y, 1.0), 0.8).unwrap();
+    /// let d = vec![q(1.0, 0.0), q(0.0, 1.0), q(-1.0, 0.0), q(0.0, -1.0)];
+    /// let s = GammaSpline::try_new_closed(d, None, Gammas::All(0.7)).unwrap();
+    /// assert_eq!(s.domain(), [0.0, 4.0]);
+    /// let seam = continuity(&s)[3];
+    /// assert!(seam.t == 4.0 && seam.c0 < 1e-15 && seam.c1 < 1e-12);
+    /// ```
+    pub fn try_new_closed(
+        points: Vec<UnitQuat>,
+        knots: Option<Vec<f64>>,
+        gamma: Gammas,
+    ) -> Result<Self, SplineError> {
+        check_loop(&points, 3)?;
+        let m = points.len();
+        let knots = Knots::or_uniform(knots, m + 1)?;
+        let gamma = expand_gammas(gamma, m, "one value per knot but the last")?;
+        let controls = closed_control_vertices(&wrapped(&points), &knots, &gamma)?;
+        Self::finish(points, knots, gamma, LastEdge::Formula, controls, true)
+    }
+
+    fn finish(
+        points: Vec<UnitQuat>,
+        knots: Knots,
+        gamma: Vec<f64>,
+        last_edge: LastEdge,
+        controls: Vec<UnitQuat>,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
         let omegas = controls
             .windows(2)
             .enumerate()
@@ -245,6 +283,7 @@ impl GammaSpline {
         let rates = omegas.iter().copied().map(Rate::new).collect();
         Ok(Self {
             points,
+            closed,
             knots,
             gamma,
             last_edge,
@@ -254,13 +293,13 @@ impl GammaSpline {
         })
     }
 
-    /// The auxiliary vertices `d₀ … dₗ₊₂`.
+    /// The auxiliary vertices `d₀ … dₗ₊₂` (closed: the periodic polygon `d₀ … d_{m−1}`).
     #[must_use]
     pub fn points(&self) -> &[UnitQuat] {
         &self.points
     }
 
-    /// The control vertices `b₀ … b₃ₗ`.
+    /// The control vertices `b₀ … b₃ₗ` (closed: `J₀, a₀, c₀, J₁, …, c_{m−1}, J₀`).
     #[must_use]
     pub fn controls(&self) -> &[UnitQuat] {
         &self.controls
@@ -272,13 +311,14 @@ impl GammaSpline {
         &self.knots
     }
 
-    /// The shape parameters `γ₁ … γₗ₋₁`.
+    /// The shape parameters `γ₁ … γₗ₋₁` (closed: `γ₀ … γ_{m−1}`).
     #[must_use]
     pub fn gamma(&self) -> &[f64] {
         &self.gamma
     }
 
-    /// The reading of the last-segment rule in use.
+    /// The reading of the last-segment rule in use ([`LastEdge::Formula`] for a closed loop,
+    /// which has no last segment).
     #[must_use]
     pub fn last_edge(&self) -> LastEdge {
         self.last_edge
@@ -290,34 +330,48 @@ impl GammaSpline {
         self.knots.segment_count()
     }
 
-    /// Continuity data at every interior knot `u₁ … uₗ₋₁`: measured first- and second-derivative
-    /// jumps, the residual of the general-spacing C² condition and of the paper's condition (5).
+    /// Continuity data at every interior knot `u₁ … uₗ₋₁` (closed: at `u₁ … u_{m−1}` and at the
+    /// seam `u_m ≡ u₀`, last): measured first- and second-derivative jumps, the residual of the
+    /// general-spacing C² condition and of the paper's condition (5).
     #[must_use]
     pub fn joint_report(&self) -> Vec<GammaJoint> {
         let l = self.segment_count();
         let b = &self.controls;
         let d = &self.points;
-        let w = weights(&self.knots, &self.gamma);
-        (2..=l)
-            .map(|i| {
-                let j = i - 1;
+        // Per segment s (0-based): its weight W and the edge of d it lies on.
+        let (w, edge): (Vec<f64>, Vec<usize>) = if self.closed {
+            (closed_weights(&self.knots, &self.gamma), (0..l).collect())
+        } else {
+            let w = weights(&self.knots, &self.gamma);
+            (w[1..].to_vec(), (1..=l).collect())
+        };
+        let m = d.len();
+        let log_d = |k: usize| body_log(d[k], d[(k + 1) % m]).unwrap_or(DVec3::ZERO);
+        let [t0, t1] = self.domain();
+        // (left segment, right segment, knot index).
+        let mut joints: Vec<(usize, usize, usize)> = (1..l).map(|j| (j - 1, j, j)).collect();
+        if self.closed {
+            joints.push((l - 1, 0, l));
+        }
+        joints
+            .into_iter()
+            .map(|(sa, sb, j)| {
                 let u = self.knots.as_slice()[j];
-                let (dl, dr) = (self.knots.width(i - 2), self.knots.width(i - 1));
+                let (dl, dr) = (self.knots.width(sa), self.knots.width(sb));
                 let left = self.jet_at(u, Side::Left);
-                let right = self.jet_at(u, Side::Right);
-                // c = b₃ᵢ₋₄⁻¹ b₃ᵢ₋₃; c⁻¹ x c is the rotation of x by c̄.
-                let cbar = self.controls[3 * i - 4]
-                    .conjugate()
-                    .mul(self.controls[3 * i - 3])
-                    .conjugate();
-                let big_l = body_log(b[3 * i - 4], b[3 * i - 2]).unwrap_or(DVec3::ZERO);
-                let a = self.omegas[3 * i - 2]; // ω₃ᵢ₋₁ = log(b₃ᵢ₋₂⁻¹ b₃ᵢ₋₁)
-                let bb = self.omegas[3 * i - 5]; // ω₃ᵢ₋₄ = log(b₃ᵢ₋₅⁻¹ b₃ᵢ₋₄)
+                let right = self.jet_at(if j == l { t0 } else { u }, Side::Right);
+                debug_assert!(j < l || u == t1, "the seam is at the end");
+                // c = b₃ᵢ₋₄⁻¹ b₃ᵢ₋₃ with b₃ᵢ₋₄ = c_a (the last inner control of the left segment)
+                // and b₃ᵢ₋₃ the joint; c⁻¹ x c is the rotation of x by c̄.
+                let cbar = b[3 * sa + 2].conjugate().mul(b[3 * sa + 3]).conjugate();
+                let big_l = body_log(b[3 * sa + 2], b[3 * sb + 1]).unwrap_or(DVec3::ZERO);
+                let a = self.omegas[3 * sb + 1]; // log(a_b⁻¹ c_b)
+                let bb = self.omegas[3 * sa + 1]; // log(a_a⁻¹ c_a)
                 let r = cbar.rotate(bb);
                 let general = a / (dr * dr) + r / (dl * dl) - big_l / (dl * dr);
-                let paper_lhs = 2.0 * self.omegas[3 * i - 4];
-                let log_d = |k: usize| body_log(d[k], d[k + 1]).unwrap_or(DVec3::ZERO);
-                let paper_rhs = dr / w[i] * log_d(i) + dl / w[i - 1] * cbar.rotate(log_d(i - 1));
+                let paper_lhs = 2.0 * self.omegas[3 * sa + 2];
+                let paper_rhs =
+                    dr / w[sb] * log_d(edge[sb]) + dl / w[sa] * cbar.rotate(log_d(edge[sa]));
                 GammaJoint {
                     index: j,
                     knot: u,
@@ -332,6 +386,85 @@ impl GammaSpline {
             })
             .collect()
     }
+}
+
+/// The validated shape parameters, `count` of them (`what` says how many a list needs).
+fn expand_gammas(gamma: Gammas, count: usize, what: &str) -> Result<Vec<f64>, SplineError> {
+    let gamma = match gamma {
+        Gammas::All(g) if !(g.is_finite() && g > 0.0) => {
+            return Err(SplineError::InvalidParameter {
+                name: "gamma",
+                reason: format!("must be finite and positive, got {g}"),
+            });
+        }
+        Gammas::All(g) => vec![g; count],
+        Gammas::Each(v) if v.len() != count => {
+            return Err(SplineError::InvalidParameter {
+                name: "gamma",
+                reason: format!("must have {what} ({count}), got {}", v.len()),
+            });
+        }
+        Gammas::Each(v) => v,
+    };
+    if let Some((k, g)) = gamma
+        .iter()
+        .enumerate()
+        .find(|(_, g)| !(g.is_finite() && **g > 0.0))
+    {
+        return Err(SplineError::InvalidParameter {
+            name: "gamma",
+            reason: format!("must be finite and positive, got γ{} = {g}", k + 1),
+        });
+    }
+    Ok(gamma)
+}
+
+/// `W₀ … W_{m−1}` of a closed loop, `W_k = γ_kΔ_{k−1} + Δ_k + γ_{k+1}Δ_{k+1}` (indices mod m).
+fn closed_weights(knots: &Knots, gamma: &[f64]) -> Vec<f64> {
+    let m = knots.segment_count();
+    (0..m)
+        .map(|k| {
+            let (prev, next) = ((k + m - 1) % m, (k + 1) % m);
+            gamma[k] * knots.width(prev) + knots.width(k) + gamma[next] * knots.width(next)
+        })
+        .collect()
+}
+
+/// The control vertices `J₀, a₀, c₀, J₁, …, c_{m−1}, J₀` of a closed loop (type docs) from the
+/// wrapped polygon `d₀ … d_{m−1}, d₀`.
+fn closed_control_vertices(
+    d: &[UnitQuat],
+    knots: &Knots,
+    gamma: &[f64],
+) -> Result<Vec<UnitQuat>, SplineError> {
+    let m = knots.segment_count();
+    let w = closed_weights(knots, gamma);
+    let inner: Vec<(UnitQuat, UnitQuat)> = (0..m)
+        .map(|k| {
+            let lw = gamma[k] * knots.width((k + m - 1) % m);
+            (
+                d[k].slerp(&d[k + 1], lw / w[k]),
+                d[k].slerp(&d[k + 1], (lw + knots.width(k)) / w[k]),
+            )
+        })
+        .collect();
+    let mut b = Vec::with_capacity(3 * m + 1);
+    for k in 0..m {
+        let prev = (k + m - 1) % m;
+        let (h0, h1) = (knots.width(prev), knots.width(k));
+        let joint = inner[prev]
+            .1
+            .try_slerp(&inner[k].0, h0 / (h0 + h1))
+            .ok_or_else(|| SplineError::InvalidParameter {
+                name: "gamma",
+                reason: format!(
+                    "gives antipodal control vertices around knots[{k}]; change gamma, knots or points"
+                ),
+            })?;
+        b.extend([joint, inner[k].0, inner[k].1]);
+    }
+    b.push(b[0]);
+    Ok(b)
 }
 
 /// `W₁ … Wₗ` (index 0 unused) with the boundary convention `γ₀Δ₋₁ = γₗΔₗ = 0`.
@@ -414,6 +547,10 @@ impl Curve for GammaSpline {
 
     fn joints(&self) -> &[f64] {
         self.knots.as_slice()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {

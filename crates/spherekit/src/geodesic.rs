@@ -142,13 +142,12 @@ impl<P: Manifold> GeodesicSpline<P> {
             .enumerate()
             .map(|(i, w)| {
                 let start = w[0].to_vector();
-                let (theta, direction) = geodesic_frame(&start, &w[1].to_vector()).ok_or(
-                    if closed && i == last {
+                let (theta, direction) =
+                    geodesic_frame(&start, &w[1].to_vector()).ok_or(if closed && i == last {
                         SplineError::AntipodalClosing
                     } else {
                         SplineError::Antipodal { index: i }
-                    },
-                )?;
+                    })?;
                 Ok(Arc {
                     start,
                     direction,

@@ -161,13 +161,11 @@ impl Squad {
         let segments = (0..n)
             .map(|i| {
                 let arc = |a: UnitQuat, b: UnitQuat| {
-                    FixedArc::try_new(a.to_vector(), b.to_vector()).ok_or(
-                        if closed && i + 1 == n {
-                            SplineError::AntipodalClosing
-                        } else {
-                            SplineError::Antipodal { index: i }
-                        },
-                    )
+                    FixedArc::try_new(a.to_vector(), b.to_vector()).ok_or(if closed && i + 1 == n {
+                        SplineError::AntipodalClosing
+                    } else {
+                        SplineError::Antipodal { index: i }
+                    })
                 };
                 Ok(SquadSegment {
                     keys: arc(keys[i], keys[i + 1])?,

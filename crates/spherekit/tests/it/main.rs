@@ -12,6 +12,7 @@ mod beta_spline;
 mod bezier;
 mod catmull_rom;
 mod classic_stress;
+mod closed;
 mod continuity;
 mod cubic;
 mod extrapolate;
