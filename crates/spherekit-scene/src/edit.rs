@@ -291,9 +291,9 @@ impl Document {
             .curves
             .get(curve)
             .ok_or(EditError::NoCurve(curve))?;
-        let n = old.points.len();
-        let keep_knots =
-            new.knots.count(n).is_some() && new.knots.count(n) == old.method.knots.count(n);
+        let (n, closed) = (old.points.len(), old.closed);
+        let keep_knots = new.knots.count_for(n, closed).is_some()
+            && new.knots.count_for(n, closed) == old.method.knots.count_for(n, closed);
         let mut doc = self.doc.clone();
         let c = curve_doc_mut(&mut doc, curve)?;
         c.insert("method".into(), json!(new.id));
@@ -543,7 +543,8 @@ enum PointEdit {
 /// or deleting a point does not make `knots` or a per-joint parameter list (β₁, β₂, γ) the wrong
 /// length. The method's registry entry says how each list lines up with the points: `skip`
 /// points at each end have no entry (Catmull-Rom's steering end points have no knot; Gamma's γ
-/// list starts at the second inner point). The entry at the matching position is removed, or
+/// list starts at the second inner point), except on a closed curve, whose lists have one entry
+/// per point and its knots one more (the time it returns to the first point). The entry at the matching position is removed, or
 /// one is inserted there: midway between its neighbours for `knots` (one spacing beyond an
 /// end), a copy of its neighbour for a parameter. A parameter list that would become empty
 /// becomes its last value (one number for every joint). Lists of another length, or of
@@ -558,9 +559,10 @@ fn follow_points(
     // A closed curve's last knot is the time it returns to the first point: the list follows
     // as if that were one more point at the end.
     let extra = usize::from(closed);
-    if let (Some(Value::Array(knots)), Some(len)) =
-        (curve.get_mut("knots"), method.knots.count(count + extra))
-    {
+    if let (Some(Value::Array(knots)), Some(len)) = (
+        curve.get_mut("knots"),
+        method.knots.count_for(count, closed),
+    ) {
         follow(knots, true, len, count + extra, edit);
     }
     if let Some(Value::Object(params)) = curve.get_mut("params") {
@@ -570,13 +572,8 @@ fn follow_points(
             };
             if let Some(value) = params.get_mut(p.name)
                 && let Value::Array(list) = value
-                && let Some(removed) = follow(
-                    list,
-                    false,
-                    count.saturating_sub(2 * per_joint.skip),
-                    count,
-                    edit,
-                )
+                && let Some(removed) =
+                    follow(list, false, per_joint.count_for(count, closed), count, edit)
                 && list.is_empty()
             {
                 *value = Value::from(removed);

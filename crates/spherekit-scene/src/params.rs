@@ -64,13 +64,26 @@ pub enum ParamKind {
 }
 
 /// How a per-joint list lines up with the points: it has `points − 2·skip` entries, the first
-/// for point `skip`, numbered from `first` in the sources.
+/// for point `skip`, numbered from `first` in the sources; on a closed curve it has one entry
+/// per point (every point is a joint of a loop, the first one at the seam).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PerJoint {
     /// Points at each end without an entry.
     pub skip: usize,
     /// The sources' index of the first entry (the Gamma paper's γ₁).
     pub first: usize,
+}
+
+impl PerJoint {
+    /// The length of the list for `points` points of an open or closed curve.
+    #[must_use]
+    pub fn count_for(self, points: usize, closed: bool) -> usize {
+        if closed {
+            points
+        } else {
+            points.saturating_sub(2 * self.skip)
+        }
+    }
 }
 
 impl Param {

@@ -17,6 +17,9 @@ use crate::params::Param;
 use crate::scene::Input;
 use crate::space::Space;
 
+/// The fewest points of a closed curve (`"closed": true`), for every method that closes.
+pub const MIN_CLOSED_POINTS: usize = 3;
+
 /// Every registered method, in the order `spherekit methods` lists them.
 pub static METHODS: &[&Method] = &[
     &methods::geodesic::METHOD,
@@ -54,7 +57,10 @@ pub struct Method {
     /// Whether the curve passes through its points (otherwise the renderer draws their polygon).
     pub interpolates: bool,
     /// Whether it has a closed form (`"closed": true`: after the last point the curve returns
-    /// to the first, as smooth at the seam as at the other joints).
+    /// to the first, as smooth at the seam as at the other joints). A closed curve needs at
+    /// least [`MIN_CLOSED_POINTS`] points, every point is a key (Catmull-Rom's and Gamma's end
+    /// points steer nothing: the neighbours wrap around), and [`KnotRule::count_for`] gives its
+    /// knots.
     pub closes: bool,
     /// Whether the curve is one piece whose degree grows with the number of points (Bézier
     /// curves: an evaluation costs O(n²)), rather than pieces between consecutive points.
@@ -124,10 +130,19 @@ pub enum KnotRule {
 
 impl KnotRule {
     /// The number of knots for `points` points of an open curve, where the method takes
-    /// knots (a closed curve has one more: the time at which it returns to the first point).
+    /// knots (a closed curve has more, see [`count_for`](Self::count_for)).
     #[must_use]
     pub fn count(self, points: usize) -> Option<usize> {
+        self.count_for(points, false)
+    }
+
+    /// The number of knots for `points` points of an open or closed curve, where the method
+    /// takes knots: open, one per point but `skip` at each end; closed, one per point (every
+    /// point is a key of a loop) and one more, the time at which it returns to the first point.
+    #[must_use]
+    pub fn count_for(self, points: usize, closed: bool) -> Option<usize> {
         match self {
+            Self::PerPoint { .. } if closed => Some(points + 1),
             Self::PerPoint { skip } => Some(points.saturating_sub(2 * skip)),
             Self::Computed | Self::None => None,
         }

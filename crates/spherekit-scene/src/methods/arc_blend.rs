@@ -36,13 +36,13 @@ pub(crate) static METHOD: Method = Method {
     min_points: 3,
     interpolates: true,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[
         ORDER,
         Param::number(
             "timing",
             "timing",
-            "the parameter: the book's knots while representable, else arc length (auto); the book's knots or an error; the mean arc lengths; uniform. Every timing traces the same curve, Cⁿ in t",
+            "the parameter: the book's knots while representable, else arc length (auto); the book's knots or an error (closed: only where they close the loop); the mean arc lengths; uniform. Every timing traces the same curve, Cⁿ in t",
             [0.0; 3],
         )
         .with_kind(ParamKind::Choice(&["auto", "book", "arc-length", "uniform"])),
@@ -59,8 +59,13 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         _ => ArcBlendTiming::Auto,
     };
     input.params.finish()?;
+    let closed = input.closed;
     Ok(on_every_sphere!(input.points, |p| {
-        let curve = ArcBlend::try_new_with(p.clone(), order, timing.clone())?;
+        let curve = if closed {
+            ArcBlend::try_new_closed_with(p.clone(), order, timing.clone())?
+        } else {
+            ArcBlend::try_new_with(p.clone(), order, timing.clone())?
+        };
         let knots = curve.knots().to_vec();
         let used = curve.timing().name();
         let built = Built::new(curve, p)

@@ -23,7 +23,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: true,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[
         Param::number(
             "beta1",
@@ -102,8 +102,13 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         max_iterations: params.optional_integer("max_iterations")?,
     };
     input.params.finish()?;
+    let closed = input.closed;
     Ok(on_every_sphere!(input.points, |p| {
-        let curve = BetaSpline::try_new(p.clone(), &beta)?;
+        let curve = if closed {
+            BetaSpline::try_new_closed(p.clone(), &beta)?
+        } else {
+            BetaSpline::try_new(p.clone(), &beta)?
+        };
         let mut built = Built::new(curve.clone(), p).with_controls(curve.controls().to_vec());
         built.auxiliary = curve.auxiliary().to_vec();
         if let Some(info) = curve.solve_info() {

@@ -21,7 +21,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 4,
     interpolates: false,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[],
     build,
 };
@@ -29,7 +29,10 @@ pub(crate) static METHOD: Method = Method {
 fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let keys = super::s3_keys(&input)?;
     input.params.finish()?;
-    Ok(BuiltCurve::S3(
-        Built::new(BsplineKim::try_new(keys.clone())?, keys).with_order(2),
-    ))
+    let curve = if input.closed {
+        BsplineKim::try_new_closed(keys.clone())?
+    } else {
+        BsplineKim::try_new(keys.clone())?
+    };
+    Ok(BuiltCurve::S3(Built::new(curve, keys).with_order(2)))
 }

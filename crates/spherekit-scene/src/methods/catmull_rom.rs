@@ -14,7 +14,7 @@ use crate::scene::{Input, Points};
 pub(crate) static METHOD: Method = Method {
     id: "catmull-rom",
     type_name: "CatmullRom",
-    summary: "Catmull-Rom spline by slerps (first and last points steer the ends)",
+    summary: "Catmull-Rom spline by slerps (first and last points steer the ends; closed: every point a key)",
     continuity: "C¹",
     source: "Catmull & Rom (1974); on S³ by slerps as in the textbook quaternion Catmull-Rom",
     spheres: Spheres::All,
@@ -22,7 +22,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 4,
     interpolates: false,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[Param::number(
         "tangent",
         "tangent",
@@ -35,14 +35,15 @@ pub(crate) static METHOD: Method = Method {
 };
 
 fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
-    let knots = input.knots;
+    let (knots, closed) = (input.knots, input.closed);
     if let Points::S3(keys) = input.points {
         let tangent = input.params.choice("tangent")?;
         input.params.finish()?;
-        let curve = if tangent == "quaternion" {
-            CatmullRom::try_new_quaternion(keys.clone(), knots)?
-        } else {
-            CatmullRom::try_new(keys.clone(), knots)?
+        let curve = match (tangent == "quaternion", closed) {
+            (true, false) => CatmullRom::try_new_quaternion(keys.clone(), knots)?,
+            (true, true) => CatmullRom::try_new_quaternion_closed(keys.clone(), knots)?,
+            (false, false) => CatmullRom::try_new(keys.clone(), knots)?,
+            (false, true) => CatmullRom::try_new_closed(keys.clone(), knots)?,
         };
         let controls = curve.controls().to_vec();
         return Ok(BuiltCurve::S3(
@@ -53,7 +54,11 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     }
     input.params.finish()?;
     Ok(on_every_sphere!(input.points, |p| {
-        let curve = CatmullRom::try_new(p.clone(), knots)?;
+        let curve = if closed {
+            CatmullRom::try_new_closed(p.clone(), knots)?
+        } else {
+            CatmullRom::try_new(p.clone(), knots)?
+        };
         let controls = curve.controls().to_vec();
         Built::new(curve, p).with_controls(controls).with_order(1)
     }))

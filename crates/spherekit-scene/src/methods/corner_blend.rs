@@ -23,7 +23,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 3,
     interpolates: false,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[
         super::arc_blend::ORDER,
         Param::number(
@@ -40,9 +40,14 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let order = input.params.integer("order")?;
     let fraction = input.params.number("fraction")?;
     input.params.finish()?;
+    let closed = input.closed;
     if let Points::S3(keys) = input.points {
         // The book's orientation construction (rotations act by left multiplication).
-        let curve = CornerBlendS3::try_new(keys.clone(), order, fraction)?;
+        let curve = if closed {
+            CornerBlendS3::try_new_closed(keys.clone(), order, fraction)?
+        } else {
+            CornerBlendS3::try_new(keys.clone(), order, fraction)?
+        };
         let knots = curve.knots().to_vec();
         return Ok(BuiltCurve::S3(
             Built::new(curve, keys)
@@ -51,7 +56,11 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         ));
     }
     Ok(on_every_sphere!(input.points, |p| {
-        let curve = CornerBlend::try_new(p.clone(), order, fraction)?;
+        let curve = if closed {
+            CornerBlend::try_new_closed(p.clone(), order, fraction)?
+        } else {
+            CornerBlend::try_new(p.clone(), order, fraction)?
+        };
         let knots = curve.knots().to_vec();
         Built::new(curve, p)
             .with_info("knots", json!(knots))

@@ -23,12 +23,12 @@ pub(crate) static METHOD: Method = Method {
     min_points: 4,
     interpolates: false,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[
         Param::number(
             "gamma",
             "γ",
-            "the Gamma spline's shape parameters γᵢ > 0 (one for every inner joint, or one for all)",
+            "the Gamma spline's shape parameters γᵢ > 0 (one for every inner joint, closed: for every point; or one for all)",
             [1.0, 0.05, 4.0],
         )
         .per_joint(2, 1),
@@ -51,7 +51,11 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     };
     let last_edge = LastEdge::from_name(input.params.choice("last_edge")?)?;
     input.params.finish()?;
-    let curve = GammaSpline::try_new(keys.clone(), input.knots, gamma, last_edge)?;
+    let curve = if input.closed {
+        GammaSpline::try_new_closed(keys.clone(), input.knots, gamma)?
+    } else {
+        GammaSpline::try_new(keys.clone(), input.knots, gamma, last_edge)?
+    };
     let controls = curve.controls().to_vec();
     let report = curve.joint_report();
     Ok(BuiltCurve::S3(

@@ -21,16 +21,20 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: true,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[],
     build,
 };
 
 fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     input.params.finish()?;
-    let knots = input.knots;
-    Ok(on_every_sphere!(input.points, |p| Built::new(
-        GeodesicSpline::try_new(p.clone(), knots)?,
-        p
-    )))
+    let (knots, closed) = (input.knots, input.closed);
+    Ok(on_every_sphere!(input.points, |p| {
+        let curve = if closed {
+            GeodesicSpline::try_new_closed(p.clone(), knots)?
+        } else {
+            GeodesicSpline::try_new(p.clone(), knots)?
+        };
+        Built::new(curve, p)
+    }))
 }

@@ -21,16 +21,20 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: true,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[],
     build,
 };
 
 fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     input.params.finish()?;
-    let knots = input.knots;
-    Ok(on_every_sphere!(input.points, |p| Built::new(
-        NlerpSpline::try_new(p.clone(), knots)?,
-        p
-    )))
+    let (knots, closed) = (input.knots, input.closed);
+    Ok(on_every_sphere!(input.points, |p| {
+        let curve = if closed {
+            NlerpSpline::try_new_closed(p.clone(), knots)?
+        } else {
+            NlerpSpline::try_new(p.clone(), knots)?
+        };
+        Built::new(curve, p)
+    }))
 }

@@ -21,7 +21,7 @@ pub(crate) static METHOD: Method = Method {
     min_points: 2,
     interpolates: true,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[],
     build,
 };
@@ -29,7 +29,11 @@ pub(crate) static METHOD: Method = Method {
 fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let keys = super::s3_keys(&input)?;
     input.params.finish()?;
-    let curve = Squad::try_new(keys.clone(), input.knots)?;
+    let curve = if input.closed {
+        Squad::try_new_closed(keys.clone(), input.knots)?
+    } else {
+        Squad::try_new(keys.clone(), input.knots)?
+    };
     let controls = curve.controls().to_vec();
     Ok(BuiltCurve::S3(
         Built::new(curve, keys)

@@ -26,6 +26,22 @@ pub(crate) fn points(space: &str, n: usize) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// `n` points of `space` around a loop, for closed curves.
+pub(crate) fn loop_points(space: &str, n: usize) -> Vec<Vec<f64>> {
+    (0..n)
+        .map(|i| {
+            #[expect(clippy::cast_precision_loss, reason = "small counts")]
+            let a = core::f64::consts::TAU * (i as f64 + 0.15 * (i % 3) as f64) / n as f64;
+            let (s, c) = a.sin_cos();
+            match space {
+                "S2" => vec![c, s, 1.1],
+                "S3" => vec![1.0, 0.4 * c, 0.4 * s, 0.3 * (2.0 * a).sin()],
+                _ => vec![c, s, 1.0, 0.3 * (2.0 * a).sin(), 0.3, -0.2],
+            }
+        })
+        .collect()
+}
+
 /// The spheres a method is checked on.
 pub(crate) fn spaces(m: &Method) -> &'static [&'static str] {
     match m.spheres {
@@ -80,7 +96,16 @@ pub(crate) fn scenes(n: usize) -> Vec<(String, Value)> {
             if m.closes {
                 let mut scene = base.clone();
                 scene["closed"] = json!(true);
-                out.push((format!("{} {space} closed", m.id), scene));
+                scene["points"] = json!(loop_points(space, count));
+                out.push((format!("{} {space} closed", m.id), scene.clone()));
+                if let Some(k) = m.knots.count_for(count, true) {
+                    #[expect(clippy::cast_precision_loss, reason = "small counts")]
+                    let knots: Vec<f64> = (0..k)
+                        .map(|i| i as f64 * 0.7 + 0.05 * (i * i) as f64)
+                        .collect();
+                    scene["knots"] = json!(knots);
+                    out.push((format!("{} {space} closed knots", m.id), scene));
+                }
             }
         }
     }
