@@ -31,6 +31,7 @@ METHODS = {}      # id -> spaces
 TAKES_KNOTS = set()
 KNOTS_AT_INNER = set()  # knots at the inner points p₁ … p_{n−2} only
 MIN_POINTS = {}
+CLOSES = set()  # methods with a closed form ("closed": true)
 
 
 REGISTRY = []
@@ -76,6 +77,8 @@ def load_registry(path):
             if knots["skip"] == 1:
                 KNOTS_AT_INNER.add(m["id"])
         MIN_POINTS[m["id"]] = m["min_points"]
+        if m["closes"]:
+            CLOSES.add(m["id"])
 
 
 # Wide parameter list: far outside, just outside, at, just inside each end of [0, 1] and [0, 3].
@@ -117,6 +120,22 @@ def generic(space, n, seed=1):
             p = [math.cos(a / 2) * math.cos(b), math.sin(a / 2) * math.cos(b), math.sin(b) * 0.6, math.sin(b) * 0.8]
         else:
             p = [math.cos(a) * math.cos(b), math.sin(a) * math.cos(b), math.sin(b) * 0.6, 0.0, math.sin(b) * 0.8, 0.1]
+        pts.append(unit(p))
+    return pts
+
+
+def ring(space, n):
+    """n points around a loop (a small circle, and its analogues on S3 and S5)."""
+    pts = []
+    for i in range(n):
+        a = 2 * math.pi * (i + 0.1 * (i % 2)) / n
+        c, s = math.cos(a), math.sin(a)
+        if space == "S2":
+            p = [c, s, 1.1]
+        elif space == "S3":
+            p = [1.0, 0.4 * c, 0.4 * s, 0.3 * math.sin(2 * a)]
+        else:
+            p = [c, s, 1.0, 0.3 * math.sin(2 * a), 0.3, -0.2]
         pts.append(unit(p))
     return pts
 
@@ -190,6 +209,34 @@ def cases():
                                                        knots=[1e6 * i for i in range(n_knots)], samples=65)
                 yield f"{pre}_knots_offset_1e9", scene(space, method, pts,
                                                          knots=[1e9 + i for i in range(n_knots)], samples=65)
+        # Closed loops (the closing step is one more step of the sequence).
+        for space in spaces if method in CLOSES else []:
+            sp = space.lower()
+            pre = f"{m}_{sp}_closed"
+            n = max(nmin, 5)
+            loop = ring(space, n)
+            yield pre, scene(space, method, loop, closed=True, samples=65)
+            extra = {"knots": [3.0 * i / n for i in range(n + 1)]} if method in TAKES_KNOTS else {}
+            yield f"{pre}_params_edge", scene(space, method, loop, closed=True, eval_at=EDGE_PARAMS, **extra)
+            yield f"{pre}_minimum_points", scene(space, method, ring(space, 3), closed=True, samples=65)
+            # The last point equal to the first (a zero-length closing step).
+            yield f"{pre}_seam_identical", scene(space, method, loop + [loop[0]], closed=True, samples=65)
+            # The last point 1e-9 from the first, and 1e-9 from antipodal to it.
+            yield f"{pre}_seam_1e-9", scene(space, method, loop + [near(loop[0], 1e-9, space)], closed=True,
+                                            samples=65)
+            q = [-x for x in near(loop[0], 1e-9, space)]
+            yield f"{pre}_seam_near_antipodal_1e-9", scene(space, method, loop[:3] + [q], closed=True,
+                                                           samples=65)
+            # The last point antipodal to the first (kept as given on S3).
+            pts = loop[:3] + [[-x for x in loop[0]]]
+            extra = {"canonicalize": False} if space == "S3" else {}
+            yield f"{pre}_seam_antipodal", scene(space, method, pts, closed=True, samples=17, **extra)
+            if method in TAKES_KNOTS:
+                mixed = [0.0]
+                for i in range(1, n + 1):
+                    mixed.append(mixed[-1] + (1e-6 if i % 2 else 1e6))
+                yield f"{pre}_knots_mixed_1e-6_1e6", scene(space, method, loop, closed=True, knots=mixed,
+                                                          samples=257)
         if "S3" in spaces:
             base = generic("S3", nmin + 1)
             pre = f"{m}_s3"
@@ -266,6 +313,16 @@ NO_CONVERGENCE = "params.solver: the solver did not converge"
 def expect_err(name):
     """The substring the error line must contain, or None when the case must succeed."""
     distinct = name.startswith(NEEDS_DISTINCT)
+    # Closed loops: the closing pair of points is a pair of neighbours like the others.
+    if "_closed_seam_antipodal" in name:
+        return "closed: the last and the first point are antipodal"
+    if "_closed_seam_identical" in name and distinct:
+        return "closed: the last and the first point coincide"
+    if name in ("cubic_s2_closed_seam_near_antipodal_1e-9", "cubic_s5_closed_seam_near_antipodal_1e-9"):
+        return "points: the C² spline could not be solved"
+    if name == "beta_s3_closed_seam_near_antipodal_1e-9":
+        # Canonicalisation flips the last key to 1e-9 from q₀: a short closing step, solved.
+        return None
     if name.endswith("_q_and_minus_q_no_canonicalize"):
         return "points[1] and points[2] " + ANTIPODAL
     if name.endswith("_q_and_minus_q") and distinct:
@@ -415,7 +472,13 @@ def bad_cases():
         ("beta_max_iterations_huge", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"max_iterations":1e12}}', "params.max_iterations: must be a whole number from 1 to 1000000"),
         ("beta_unknown_solver", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"solver":"gauss"}}', "params.solver: must be one of: newton, jacobi"),
         ("catmull_rom_bad_tangent", '{"space":"S3","method":"catmull-rom","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"tangent":"chordal"}}', "params.tangent: must be one of: quaternion, intrinsic"),
-        ("closed_geodesic", '{"space":"S2","method":"geodesic","closed":true,"points":[[1,0,0],[0,1,0],[0,0,1]]}', 'closed: method "geodesic" has no closed form'),
+        ("closed_bezier", '{"space":"S2","method":"bezier","closed":true,"points":[[1,0,0],[0,1,0],[0,0,1]]}', 'closed: method "bezier" has no closed form'),
+        ("closed_geodesic_two_points", '{"space":"S2","method":"geodesic","closed":true,"points":[[1,0,0],[0,1,0]]}', "points: this method needs at least 3 points, got 2"),
+        ("closed_catmull_rom_open_knot_count", '{"space":"S2","method":"catmull-rom","closed":true,"points":[[1,0,0],[0,1,0],[0,0,1],[-1,0.2,0.3]],"knots":[0,1]}', "knots: expected 5 knots, got 2"),
+        ("closed_squad_knots_not_increasing", '{"space":"S3","method":"squad","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0]],"knots":[0,1,1,2]}', "knots[2] is not greater than knots[1]"),
+        ("closed_gamma_list_wrong_length", '{"space":"S3","method":"gamma","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"gamma":[1,2]}}', "params.gamma: must have one value per knot but the last (4), got 2"),
+        ("closed_arc_blend_book_does_not_close", '{"space":"S2","method":"arc-blend","closed":true,"params":{"timing":"book"},"points":[[1,0,0.3],[0.2,0.9,0.4],[-0.8,0.4,0.1],[-0.3,-0.9,0.5]]}', "params.timing: the book knots do not close the loop"),
+        ("closed_arc_blend_no_circle_around", '{"space":"S2","method":"arc-blend","closed":true,"points":[[1,0,0.3],[0.2,0.9,0.4],[-0.8,0.4,0.1],[1,0,0.3],[0.1,-0.9,0.5]]}', "points[3] and points[0] coincide: no unique circle"),
         ("closed_not_bool", '{"space":"S2","method":"cubic","closed":"yes","points":[[1,0,0],[0,1,0],[0,0,1]]}', "invalid type: string"),
         ("closed_cubic_knot_count", '{"space":"S3","method":"cubic","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0]],"knots":[0,1,2]}', "knots: expected 4 knots, got 3"),
         ("closed_cubic_two_keys", '{"space":"S2","method":"cubic","closed":true,"points":[[1,0,0],[0,1,0]]}', "points: this method needs at least 3 points, got 2"),
