@@ -42,6 +42,11 @@
 //! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
 //! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline | Cⁿ |
 //!
+//! Every type but the two Bézier curves also builds a **closed loop** (`try_new_closed`, and
+//! [`ArcBlend::try_new_closed_with`]): the points wrap around, the curve returns to its first
+//! point, [`Curve::is_closed`] is `true`, and the seam is a joint as smooth as the others, which
+//! [`continuity`] reports last (`docs/derivations.md#closed-loops`).
+//!
 //! Each type's documentation gives the formula, its source (the publication, with section and
 //! equation numbers) and the corrections the sources needed. The repository's
 //! `docs/references.md` lists the publications and `docs/derivations.md` states the project's
