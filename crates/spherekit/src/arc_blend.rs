@@ -574,7 +574,8 @@ impl<P: Manifold> ArcBlend<P> {
             if closed {
                 let c = &circles[m - 1];
                 let ratio = widths[m - 1] * (c.second_angle() / c.first_angle()) / widths[0];
-                if !((ratio - 1.0).abs() <= ArcBlendTiming::CLOSURE_TOLERANCE) {
+                let closes = (ratio - 1.0).abs() <= ArcBlendTiming::CLOSURE_TOLERANCE;
+                if !closes {
                     return Err(SplineError::TimingNotClosed {
                         timing: "book",
                         ratio,
@@ -801,12 +802,12 @@ fn warps<P: Manifold>(circles: &[CircleArc<P>], knots: &Knots, closed: bool) -> 
     let mut start = vec![1.0; k];
     let mut end = vec![1.0; k];
     let first_key = usize::from(!closed);
-    for i in first_key..k {
+    for (i, a) in start.iter_mut().enumerate().skip(first_key) {
         let prev = (i + k - 1) % k;
         let c = &circles[prev];
         let rho = (c.first_angle() / c.second_angle()) * (knots.width(i) / knots.width(prev));
         if rho < 1.0 {
-            start[i] = rho;
+            *a = rho;
         } else if rho > 1.0 {
             end[prev] = 1.0 / rho;
         }

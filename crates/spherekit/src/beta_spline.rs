@@ -714,9 +714,9 @@ fn control_points<P: Manifold>(d: &[P], shape: &Shape, closed: bool) -> Result<V
     let first = if closed { junction(0)? } else { d[0].clone() };
     let mut out = Vec::with_capacity(3 * n + 1);
     out.push(first.clone());
-    for i in 0..n {
-        out.push(inner[i][0].clone());
-        out.push(inner[i][1].clone());
+    for (i, [a, b]) in inner.iter().enumerate() {
+        out.push(a.clone());
+        out.push(b.clone());
         if i + 1 < n {
             out.push(junction(i + 1)?);
         }

@@ -330,10 +330,10 @@ fn beta_loops_with_bias_are_g1_with_the_bias_ratio_at_the_seam() {
     };
     let c = BetaSpline::try_new_closed(p.clone(), &params).unwrap();
     check_loop(&c, Some((&p, &uniform(m + 1))), Smooth::G1);
-    for i in 0..m {
+    for (i, b) in beta1.iter().enumerate() {
         let left = c.jet_at(if i == 0 { m as f64 } else { i as f64 }, Side::Left);
         let right = c.jet_at(i as f64, Side::Right);
-        let d = (right.velocity - left.velocity * beta1[i]).length();
+        let d = (right.velocity - left.velocity * *b).length();
         assert!(d < 1e-9, "speed ratio β₁ at joint {i}: {d:e}");
     }
     // Built from a periodic polygon of auxiliary vertices, without a solve.
@@ -561,7 +561,8 @@ fn bad_loops_are_typed_errors() {
         ArcBlend::try_new_closed_with(p.clone(), 2, ArcBlendTiming::Knots(uniform(5))).unwrap_err(),
         count
     );
-    let flat = Some(vec![0.0, 1.0, 2.0, 2.0, 3.0, 4.0]);
+    let flat_knots = vec![0.0, 1.0, 2.0, 2.0, 3.0, 4.0];
+    let flat = Some(flat_knots.clone());
     let increasing = SplineError::KnotsNotIncreasing { index: 3 };
     assert_eq!(
         GeodesicSpline::try_new_closed(p.clone(), flat.clone()).unwrap_err(),
@@ -576,8 +577,7 @@ fn bad_loops_are_typed_errors() {
         increasing
     );
     assert_eq!(
-        ArcBlend::try_new_closed_with(p.clone(), 2, ArcBlendTiming::Knots(flat.unwrap()))
-            .unwrap_err(),
+        ArcBlend::try_new_closed_with(p.clone(), 2, ArcBlendTiming::Knots(flat_knots)).unwrap_err(),
         increasing
     );
     // γ: one per knot but the last.
