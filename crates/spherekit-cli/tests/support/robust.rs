@@ -15,8 +15,8 @@
 use serde_json::{Map, Value, json};
 use spherekit::{Ambient, Side};
 use spherekit_scene::{
-    Built, BuiltCurve, KnotRule, METHODS, Method, ParamKind, SampleOptions, Sampling, Scene,
-    ScenePoint, Space,
+    Built, BuiltCurve, METHODS, Method, ParamKind, SampleOptions, Sampling, Scene, ScenePoint,
+    Space,
 };
 
 use super::arb::{Result as ArbResult, Unstructured};
@@ -303,10 +303,15 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
     if space == "S3" && u.ratio(1, 3)? {
         scene.insert("canonicalize".into(), json!(false));
     }
-    if let KnotRule::PerPoint { skip } = method.knots
+    // A closed loop, sometimes, for the methods that have one (its knots: one per point and
+    // the time of the return).
+    let closed = method.closes && u.ratio(1, 3)?;
+    if closed {
+        scene.insert("closed".into(), json!(true));
+    }
+    if let Some(count) = method.knots.count_for(n, closed)
         && u.ratio(1, 2)?
     {
-        let count = n.saturating_sub(2 * skip);
         let mut t = pick(u, &[0.0, -1e6, 1e9, 1e-9])?;
         let mut knots = Vec::with_capacity(count);
         for _ in 0..count {
