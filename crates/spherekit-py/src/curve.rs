@@ -222,6 +222,9 @@ pub(crate) fn put_jets<P: Flat>(
 ///   scalar-last `[x, y, z, w]` as in scipy, or `[w, x, y, z]` with `scalar_first=True`; the
 ///   same order is used for the points, velocities and accelerations returned.
 /// - `knots`: the parameter of each point (methods that take knots), strictly increasing.
+/// - `closed`: a closed loop (every method whose `methods()` entry has `closes`): the curve
+///   returns to its first point, as smooth at the seam as at the other joints; `knots` then has
+///   one entry per point and one more, the time of the return.
 /// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`…).
 ///
 /// `curve(t)` gives the points at the parameters `t` (a number or a 1-D array), `curve(t, 1)`

@@ -166,7 +166,9 @@ impl Method {
     }
 
     /// The descriptor as JSON: `{ "id", "type", "summary", "continuity", "source", "spaces",
-    /// "knots", "min_points", "interpolates", "params": [...] }`, where `knots` is
+    /// "knots", "min_points", "interpolates", "single_piece", "closes", "params": [...] }`
+    /// (a closed curve has at least [`MIN_CLOSED_POINTS`] points and
+    /// [`KnotRule::count_for`] knots), where `knots` is
     /// `{ "skip": k }` for methods that take one knot per point but `k` at each end, or
     /// `"computed"` / `"none"`.
     #[must_use]

@@ -10,6 +10,7 @@
 )]
 
 mod batch;
+mod closed;
 mod registry;
 mod scene_sample;
 #[path = "../support/cases.rs"]
