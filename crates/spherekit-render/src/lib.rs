@@ -596,11 +596,21 @@ fn draw_points<P: Manifold>(
     let input: Vec<DVec3> = b.inputs.iter().map(embed).collect();
     let controls: Vec<DVec3> = b.controls.iter().map(embed).collect();
     let aux: Vec<DVec3> = b.auxiliary.iter().map(embed).collect();
+    // A closed curve's polygons close too (its controls already end where they start).
+    let closing = |v: &[DVec3]| -> Vec<DVec3> {
+        let mut out = v.to_vec();
+        if b.curve.is_closed()
+            && let Some(&first) = v.first()
+        {
+            out.push(first);
+        }
+        out
+    };
     if polygon {
-        arcs(canvas, &input, polygon_style(POINT_COLOR));
+        arcs(canvas, &closing(&input), polygon_style(POINT_COLOR));
     }
     arcs(canvas, &controls, polygon_style(color));
-    arcs(canvas, &aux, polygon_style(color));
+    arcs(canvas, &closing(&aux), polygon_style(color));
     canvas.polyline(&pts, curve_style(color));
     for p in &controls {
         canvas.marker(*p, Shape::Square, color, 6.0);
