@@ -477,6 +477,7 @@ def bad_cases():
         ("closed_catmull_rom_open_knot_count", '{"space":"S2","method":"catmull-rom","closed":true,"points":[[1,0,0],[0,1,0],[0,0,1],[-1,0.2,0.3]],"knots":[0,1]}', "knots: expected 5 knots, got 2"),
         ("closed_squad_knots_not_increasing", '{"space":"S3","method":"squad","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0]],"knots":[0,1,1,2]}', "knots[2] is not greater than knots[1]"),
         ("closed_gamma_list_wrong_length", '{"space":"S3","method":"gamma","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"gamma":[1,2]}}', "params.gamma: must have one value per knot but the last (4), got 2"),
+        ("closed_squad_one_full_turn", '{"space":"S3","method":"squad","closed":true,"points":[[1,0,0,0],[0.7071,0,0,0.7071],[0,0,0,1],[-0.7071,0,0,0.7071]]}', "closed: the keys turn by an odd number of full turns"),
         ("closed_arc_blend_book_does_not_close", '{"space":"S2","method":"arc-blend","closed":true,"params":{"timing":"book"},"points":[[1,0,0.3],[0.2,0.9,0.4],[-0.8,0.4,0.1],[-0.3,-0.9,0.5]]}', "params.timing: the book knots do not close the loop"),
         ("closed_arc_blend_no_circle_around", '{"space":"S2","method":"arc-blend","closed":true,"points":[[1,0,0.3],[0.2,0.9,0.4],[-0.8,0.4,0.1],[1,0,0.3],[0.1,-0.9,0.5]]}', "points[3] and points[0] coincide: no unique circle"),
         ("closed_not_bool", '{"space":"S2","method":"cubic","closed":"yes","points":[[1,0,0],[0,1,0],[0,0,1]]}', "invalid type: string"),

@@ -70,3 +70,41 @@ fn opening_a_loop_drops_its_knots() {
         "arc-blend computes its own"
     );
 }
+
+/// A camera orbit of one full turn (keys at 0°, 90°, 180°, 270° about z) returns to −q₀ on S³:
+/// no choice of signs closes it with short steps, and the scene says so instead of drawing a
+/// closing step that turns back the long way; with `"canonicalize": false` the keys are used as
+/// given.
+#[test]
+fn a_loop_of_one_full_turn_is_refused_on_s3() {
+    let keys: Vec<Vec<f64>> = (0..4)
+        .map(|k| {
+            let half = f64::from(k) * core::f64::consts::FRAC_PI_4;
+            vec![half.cos(), 0.0, 0.0, half.sin()]
+        })
+        .collect();
+    for method in ["geodesic", "squad", "catmull-rom", "arc-blend", "cubic"] {
+        let scene = json!({ "space": "S3", "method": method, "closed": true, "points": keys });
+        let e = Document::from_json(&scene.to_string()).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("closed: the keys turn by an odd number of full turns"),
+            "{method}: {e}"
+        );
+        let scene = json!({ "space": "S3", "method": method, "closed": true, "points": keys,
+                            "canonicalize": false });
+        assert!(
+            Document::from_json(&scene.to_string()).is_ok(),
+            "{method} as given"
+        );
+    }
+    // Two full turns close.
+    let keys: Vec<Vec<f64>> = (0..8)
+        .map(|k| {
+            let half = f64::from(k) * core::f64::consts::FRAC_PI_4;
+            vec![half.cos(), 0.0, 0.0, half.sin()]
+        })
+        .collect();
+    let scene = json!({ "space": "S3", "method": "squad", "closed": true, "points": keys });
+    assert!(Document::from_json(&scene.to_string()).is_ok());
+}
