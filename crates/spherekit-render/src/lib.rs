@@ -31,6 +31,8 @@ mod canvas;
 mod flatten;
 mod legend;
 mod plot;
+#[cfg(feature = "png")]
+pub mod png;
 mod stroke;
 mod surface;
 mod text;
