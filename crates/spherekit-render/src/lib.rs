@@ -130,18 +130,59 @@ pub fn render_built(
     curves: &[BuiltCurve],
     size: u32,
 ) -> Result<Pixmap, RenderError> {
+    render_figure(scene, curves, size).map(|(pixmap, _)| pixmap)
+}
+
+/// Where a plot strip's axes are in a frame: the box of the plotted values, in pixels of the
+/// frame, with the time at its left and right edges (so that an interactive caller can put a
+/// cursor on the time axis, or read a time from a pointer).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlotAxes {
+    /// The left edge (pixels), where the time is `time[0]`.
+    pub left: f32,
+    /// The top edge (pixels).
+    pub top: f32,
+    /// The right edge (pixels), where the time is `time[1]`.
+    pub right: f32,
+    /// The bottom edge (pixels).
+    pub bottom: f32,
+    /// The time (the curves' t, or u with `view.plot_time` `"normalized"`) at the left and
+    /// right edges.
+    pub time: [f64; 2],
+}
+
+/// As [`render_built`], and where the frame's plot strips put their axes (top to bottom).
+///
+/// # Errors
+///
+/// As [`render_built`].
+pub fn render_figure(
+    scene: &Scene,
+    curves: &[BuiltCurve],
+    size: u32,
+) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
     let figure = Figure::new(scene, curves, size)?;
     let frames: Vec<Rect> = figure.panels.iter().map(|(r, _)| *r).collect();
     let mut pixmap =
         backdrop(size, figure.height, figure.axes, &frames).ok_or(RenderError::Size(size))?;
-    Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+    let boxes = Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
         let mut raster = Raster {
             pixmap: &mut pixmap,
             strokes,
         };
-        figure.draw(&mut raster);
+        figure.draw(&mut raster)
     });
-    Ok(pixmap)
+    let plots = boxes
+        .into_iter()
+        .map(|[left, top, right, bottom]| PlotAxes {
+            left,
+            top,
+            right,
+            bottom,
+            time: figure.time,
+        })
+        .collect();
+    Ok((pixmap, plots))
 }
 
 /// The same picture as [`render`] as an SVG document: vector strokes, the sphere as a radial
@@ -313,12 +354,14 @@ impl Figure {
         })
     }
 
-    /// Draws the figure over its backdrop.
-    fn draw(&self, surface: &mut dyn Surface) {
+    /// Draws the figure over its backdrop; returns the plots' axes boxes (see [`PlotAxes`]).
+    fn draw(&self, surface: &mut dyn Surface) -> Vec<[f32; 4]> {
         self.canvas.draw(surface);
-        for (area, panel) in &self.panels {
-            plot::draw(surface, *area, self.scale, panel, self.time);
-        }
+        let boxes = self
+            .panels
+            .iter()
+            .filter_map(|(area, panel)| plot::draw(surface, *area, self.scale, panel, self.time))
+            .collect();
         legend::draw(
             surface,
             &self.legend,
@@ -344,6 +387,7 @@ impl Figure {
                 surface::Anchor::Middle,
             );
         }
+        boxes
     }
 }
 
