@@ -14,7 +14,7 @@
 //   bench.js      ?bench only
 import init, * as sk from '../pkg/spherekit_wasm.js';
 import { $, state, query, showError, attempt, controlOf, methodOf } from './state.js';
-import { redraw, drawNow, pointOnCanvas, keyAxisOnScreen, plotX } from './view.js';
+import { redraw, drawNow, pointOnCanvas, keyAxisOnScreen, plotX, frameTimes } from './view.js';
 import { changed, pretty, renderPanels, setTime } from './panels.js';
 import { installPointer, moveTimes } from './pointer.js';
 import { installAnimation, setPlaying } from './animation.js';
@@ -185,6 +185,19 @@ async function main() {
     zoom: () => state.zoom,
     readouts: () => state.readouts,
     moveTimes: () => moveTimes.slice(),
+    frameTimes: () => frameTimes.slice(),
+    /** A CSS-pixel position on the sphere where no point or key can be picked (to turn the view). */
+    emptySpot: () => {
+      const s = state.size;
+      for (let k = 0; k < 400; k++) {
+        const a = k * 2.399;
+        const r = 0.05 + 0.3 * ((k * 0.618) % 1);
+        const x = s / 2 + r * s * Math.cos(a);
+        const y = s / 2 + r * s * Math.sin(a);
+        if (!state.pg.pick(x, y, s, 40 * Math.max(1, s / 512))) return toViewport([x, y]);
+      }
+      return toViewport([s / 2, s / 2]);
+    },
   };
   drawNow();
   document.body.dataset.ready = 'true';

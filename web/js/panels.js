@@ -2,7 +2,7 @@
 // the point editor, the readout at t, the continuity table; `changed()`, which every
 // successful edit calls; undo and redo.
 import * as sk from '../pkg/spherekit_wasm.js';
-import { $, state, attempt, commit, controlOf, hooks, placeNotice, showError, inSpaces, methodOf, updateHistoryButtons } from './state.js';
+import { $, state, attempt, commit, controlOf, hooks, parkNotice, placeNotice, showError, inSpaces, methodOf, updateHistoryButtons } from './state.js';
 import { hasPlot, redraw, drawOverlay } from './view.js';
 import { curveControls } from './controls.js';
 import { aboutExample } from './examples.js';
@@ -92,6 +92,7 @@ function sameScene(a, b) {
 }
 
 export function renderPanels() {
+  parkNotice();
   const pg = state.pg;
   const scene = JSON.parse(pg.scene_json());
   const space = pg.space();
@@ -232,6 +233,7 @@ function methodSelect(space, value, id) {
 }
 
 export function renderPointEditor() {
+  parkNotice();
   const box = $('point-editor');
   box.replaceChildren();
   if (!state.selected) {

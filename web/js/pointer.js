@@ -134,7 +134,7 @@ function hover(ev) {
   const same = (a, b) => (a === b) || (a && b && a[0] === b[0] && a[1] === b[1]);
   if (!same(key, state.hover)) {
     state.hover = key;
-    redraw(); // only the overlay changes; the frame is the cached one
+    drawOverlay(); // only the overlay changes
   }
 }
 

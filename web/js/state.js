@@ -68,6 +68,13 @@ export function placeNotice() {
   box.scrollIntoView({ block: 'nearest' });
 }
 
+/** Takes the notice out of the side panel before a part of it is redrawn (it is put back
+ * beside the redrawn control by placeNotice). */
+export function parkNotice() {
+  const box = $('notice');
+  if (box.parentElement !== $('stage')) $('stage').append(box);
+}
+
 /** The control an event in the side panel came from (for the notice), or null. */
 export function controlOf(el) {
   return el?.closest?.('#panel [data-key], #panel label, #panel .row') ?? null;

@@ -13,8 +13,10 @@ export function hasPlot() {
   return view.plot ? view.plot !== 'none' : state.pg.space() === 'S3';
 }
 
-/** The largest frame drawn while dragging (device pixels wide). */
-const QUICK_MAX = 720;
+/** The frame drawn while dragging: this fraction of the CSS width in pixels, at most QUICK_MAX
+ * wide (measured: BENCHMARKS.md, section 6). */
+const QUICK_SCALE = 0.7;
+const QUICK_MAX = 640;
 
 function fit() {
   state.dpr = fixedSize ? 1 : window.devicePixelRatio || 1;
@@ -41,6 +43,8 @@ function fit() {
 
 let pending = false;
 const tasks = [];
+/** Durations (ms) of the last frames' work: queued edits, render and overlay (the bench reads them). */
+export const frameTimes = [];
 /** Redraws on the next animation frame, after running `task` (drags queue their edit here, so
  * that many pointer moves in one frame make one edit and one render). */
 export function redraw(task = null) {
@@ -48,9 +52,14 @@ export function redraw(task = null) {
   if (pending) return;
   pending = true;
   requestAnimationFrame(() => {
-    pending = false;
+    const start = performance.now();
+    // Redraws asked for by the tasks are this frame's (`pending` is still set).
     for (const t of tasks.splice(0)) t();
     drawNow();
+    pending = false;
+    frameTimes.push(performance.now() - start);
+    if (frameTimes.length > 2000) frameTimes.splice(0, 1000);
+    if (tasks.length) redraw();
   });
 }
 
@@ -58,7 +67,9 @@ export function drawNow() {
   const canvas = $('scene');
   fit();
   const quick = state.quick && !fixedSize;
-  const drawSize = quick ? Math.min(state.size, Math.max(160, Math.round(Math.min(QUICK_MAX, state.size / state.dpr)))) : state.size;
+  const drawSize = quick
+    ? Math.min(state.size, Math.max(160, Math.round(Math.min(QUICK_MAX, (QUICK_SCALE * state.size) / state.dpr))))
+    : state.size;
   try {
     state.pg.draw(canvas, drawSize);
   } catch (e) {

@@ -27,7 +27,7 @@ use spherekit::{
     angular_velocity_acceleration_body,
 };
 use spherekit_render::{
-    Camera, PALETTE, PlotAxes, camera_of, render_built, render_figure, turn_towards,
+    Camera, PALETTE, PlotAxes, Prepared, camera_of, prepare, render_built, turn_towards,
 };
 use spherekit_scene::{
     BuiltCurve, Document, EditError, PlotTime, SAMPLE_FIELDS, SampleOptions, Scene, SceneError,
@@ -287,6 +287,15 @@ fn straight_rgba(pixmap: Pixmap) -> Vec<u8> {
     pixmap.take()
 }
 
+/// What a laid-out figure depends on: the scene text without `view.camera`, and the size.
+fn layout_key(scene: &str, size: u32) -> String {
+    let mut v: Value = serde_json::from_str(scene).unwrap_or(Value::Null);
+    if let Some(view) = v.get_mut("view").and_then(Value::as_object_mut) {
+        view.remove("camera");
+    }
+    format!("{size} {v}")
+}
+
 /// The page's handle on one scene: the edited [`Document`] and the last rendered frame.
 ///
 /// Edits go through [`Document`] (checked exactly like a pasted scene, rebuilding only the
@@ -301,6 +310,9 @@ pub struct Playground {
     rgba: Vec<u8>,
     /// Where the last rendered frame's plots put their axes.
     plots: Vec<PlotAxes>,
+    /// The last figure laid out, with its key (the scene without its camera, and the size):
+    /// turning the view renders it again without flattening or sampling.
+    prepared: Option<(String, Prepared)>,
     /// What the last failed edit's solver reported (see [`Playground::failure`]).
     failure: Option<SolveFailure>,
 }
@@ -358,6 +370,7 @@ impl Playground {
             width: 0,
             rgba: Vec::new(),
             plots: Vec::new(),
+            prepared: None,
             failure: None,
         })
     }
@@ -838,8 +851,15 @@ impl Playground {
     ///
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
-        let (pixmap, plots) =
-            render_figure(self.doc.scene(), self.doc.curves(), size).map_err(js)?;
+        let (scene, curves) = (self.doc.scene(), self.doc.curves());
+        let key = layout_key(&self.doc.to_json(), size);
+        let prepared = match self.prepared.take() {
+            Some((k, p)) if k == key => p,
+            _ => prepare(scene, curves, size).map_err(js)?,
+        };
+        let rendered = prepared.render(scene, curves);
+        self.prepared = Some((key, prepared));
+        let (pixmap, plots) = rendered.map_err(js)?;
         let h = pixmap.height();
         self.width = pixmap.width();
         self.rgba = straight_rgba(pixmap);
