@@ -39,6 +39,7 @@ function fit() {
   state.base = Math.floor(css);
   state.size = Math.min(4096, Math.floor(css * state.dpr * state.zoom));
   state.aspectKey = key;
+  state.fitFactor = factor;
 }
 
 let pending = false;
@@ -83,7 +84,7 @@ export function drawNow() {
   if (!quick && state.zoom === 1) {
     const again = state.aspect?.key !== state.aspectKey && !fixedSize;
     state.aspect = { key: state.aspectKey, value: aspect };
-    if (again && Math.abs(aspect * state.base - canvas.height / state.dpr) > 2) {
+    if (again && Math.abs(aspect - state.fitFactor) > 0.01) {
       // The first frame of this shape: fit again with its real height.
       drawNow();
       return;
