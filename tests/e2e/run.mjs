@@ -655,6 +655,29 @@ test('undo restores the scene exactly after a drag; redo; reset view; zoom; hove
   assert.ok(zoom > 1.3, `the wheel zooms in (${zoom})`);
   assert.ok((await page.evaluate(() => window.spherekitPage.size())) > (await page.evaluate(() => document.getElementById('canvas-wrap').clientWidth)), 'drawn larger than the stage');
   await page.screenshot({ path: path.join(outDir, 'playground-zoomed.png') });
+  // Pinch: two touch pointers moving apart zoom in further, moving together zoom out.
+  const pinch = (spread0, spread1) => page.evaluate(async ([a, b]) => {
+    const el = document.getElementById('overlay');
+    const r = el.getBoundingClientRect();
+    const [cx, cy] = [r.left + r.width / 2, r.top + r.width / 2];
+    const send = (type, id, dx) => el.dispatchEvent(new PointerEvent(type, { pointerId: id, pointerType: 'touch', isPrimary: id === 11, clientX: cx + dx, clientY: cy, bubbles: true }));
+    send('pointerdown', 11, -a);
+    send('pointerdown', 12, a);
+    for (let k = 1; k <= 5; k++) {
+      const d = a + ((b - a) * k) / 5;
+      send('pointermove', 11, -d);
+      send('pointermove', 12, d);
+      await new Promise((res) => requestAnimationFrame(res));
+    }
+    send('pointerup', 11, -b);
+    send('pointerup', 12, b);
+    await new Promise((res) => setTimeout(res, 250));
+    return window.spherekitPage.zoom();
+  }, [spread0, spread1]);
+  const pinched = await pinch(40, 60);
+  assert.ok(pinched > zoom * 1.3, `pinching out zooms in (${zoom} → ${pinched})`);
+  const unpinched = await pinch(60, 30);
+  assert.ok(unpinched < pinched * 0.6, `pinching in zooms out (${pinched} → ${unpinched})`);
   await page.click('#reset-view');
   assert.equal(await page.evaluate(() => window.spherekitPage.zoom()), 1, 'reset view: zoom 1');
   assert.equal(JSON.parse(await scene()).view.camera, undefined, 'reset view: the default camera');

@@ -42,7 +42,11 @@ function setZoom(z) {
 
 function onDown(ev) {
   pointers.set(ev.pointerId, [ev.clientX, ev.clientY]);
-  $('overlay').setPointerCapture(ev.pointerId);
+  try {
+    $('overlay').setPointerCapture(ev.pointerId);
+  } catch {
+    // A pointer the browser does not know as active (a synthetic one) cannot be captured.
+  }
   if (pointers.size === 2) {
     // A second finger: pinch to zoom (the drag in progress stops where it is).
     const [a, b] = [...pointers.values()];

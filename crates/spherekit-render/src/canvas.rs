@@ -47,12 +47,11 @@ enum Item {
 /// a [`Canvas`] draws for any camera, so that a figure can be laid out once and projected for
 /// each camera of a turning view ([`Sketch::project`] adds them to a canvas in the same order,
 /// so the pixels are those of adding them to the canvas directly).
-#[derive(Clone, Debug, Default)]
+#[derive(Default)]
 pub(crate) struct Sketch {
     marks: Vec<Mark>,
 }
 
-#[derive(Clone, Debug)]
 enum Mark {
     Line(Vec<DVec3>, LineStyle),
     Marker(DVec3, Shape, Rgb, f32),

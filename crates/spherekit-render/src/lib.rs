@@ -198,13 +198,22 @@ pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<Camera, RenderE
 /// interactive caller turning the view lays the figure out once ([`prepare`]) and renders it
 /// for each new camera without flattening the curves or sampling the plots again; the pixels
 /// are those of [`render_figure`].
-#[derive(Clone, Debug)]
 pub struct Prepared {
     size: u32,
     sketch: Sketch,
     panels: Vec<(Rect, plot::Panel)>,
     time: [f64; 2],
     single: bool,
+}
+
+impl fmt::Debug for Prepared {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Prepared")
+            .field("size", &self.size)
+            .field("plots", &self.panels.len())
+            .field("time", &self.time)
+            .finish_non_exhaustive()
+    }
 }
 
 /// Lays out the figure of `curves` (built from `scene`) at `size` for any camera (see

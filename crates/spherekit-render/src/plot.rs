@@ -17,7 +17,6 @@ const GREY: Rgb = [0xc3, 0xc9, 0xd1];
 pub(crate) const INK: Rgb = [0x3a, 0x41, 0x4a];
 
 /// One polyline family of a plot, one polyline per piece (so jumps at joints stay visible).
-#[derive(Clone, Debug)]
 pub(crate) struct Series {
     pub(crate) color: Rgb,
     /// Dash and gap (pixels at 512 px), or solid.
@@ -28,7 +27,6 @@ pub(crate) struct Series {
 }
 
 /// One strip: what it plots and its labels.
-#[derive(Clone, Debug)]
 pub(crate) struct Panel {
     /// The quantity and its unit, above the plot.
     pub(crate) quantity: String,
