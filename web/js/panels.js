@@ -24,9 +24,20 @@ export function changed({ panels = true, light = false } = {}) {
     renderContinuity();
   }
   if (panels) renderPanels();
-  renderReadout();
+  if (light) readoutSoon();
+  else renderReadout();
   updateHistoryButtons();
   redraw();
+}
+
+/** The readout while dragging: at most five times a second. */
+let readoutTimer = 0;
+function readoutSoon() {
+  if (readoutTimer) return;
+  readoutTimer = setTimeout(() => {
+    readoutTimer = 0;
+    renderReadout();
+  }, 200);
 }
 hooks.changed = () => changed();
 

@@ -96,8 +96,8 @@ export function drawNow() {
   const cssW = state.size / state.dpr;
   const offset = state.zoom === 1 ? 0 : (state.base - cssW) / 2;
   const wrap = $('canvas-wrap');
-  wrap.style.width = `${state.base}px`;
-  wrap.style.height = `${Math.round(state.base * frameAspect)}px`;
+  setStyle(wrap, 'width', `${state.base}px`);
+  setStyle(wrap, 'height', `${Math.round(state.base * frameAspect)}px`);
   const overlay = $('overlay');
   const oh = Math.round(state.size * aspect);
   if (overlay.width !== state.size || overlay.height !== oh) {
@@ -105,24 +105,40 @@ export function drawNow() {
     overlay.height = oh;
   }
   for (const c of [canvas, overlay]) {
-    c.style.width = `${cssW}px`;
-    c.style.height = `${cssW * aspect}px`;
-    c.style.left = `${offset}px`;
-    c.style.top = `${offset}px`;
+    setStyle(c, 'width', `${cssW}px`);
+    setStyle(c, 'height', `${cssW * aspect}px`);
+    setStyle(c, 'left', `${offset}px`);
+    setStyle(c, 'top', `${offset}px`);
   }
-  $('zoom-out').textContent = `zoom ${Math.round(state.zoom * 100)}%`;
+  const zoom = `zoom ${Math.round(state.zoom * 100)}%`;
+  if ($('zoom-out').textContent !== zoom) $('zoom-out').textContent = zoom;
   drawOverlay();
+}
+
+let lastOverlay = '';
+
+/** Sets an inline style only when it changes (an unchanged write still costs a style pass). */
+function setStyle(el, name, value) {
+  if (el.style[name] !== value) el.style[name] = value;
 }
 
 /** The moving bodies at t, the plot cursor, the hover and selection rings, over the image. */
 export function drawOverlay() {
   const overlay = $('overlay');
+  const pg = state.pg;
+  const bodies = state.playing || state.t > state.axis[0];
+  // The same marks as last time (turning the view with nothing on the sphere's overlay moves
+  // only the plot-free image): leave the overlay alone, so the compositor has less to do.
+  const onSphere = bodies || state.selected || state.hover;
+  const key = [state.t, bodies, state.selected, state.hover, overlay.width, overlay.height, pg.builds(), pg.curve_count(),
+    onSphere ? pg.camera().join() : '', JSON.stringify(state.plots)].join('|');
+  if (key === lastOverlay) return;
+  lastOverlay = key;
   const ctx = overlay.getContext('2d');
   ctx.clearRect(0, 0, overlay.width, overlay.height);
-  const pg = state.pg;
   const s = state.size;
   const k = s / 512;
-  if (state.playing || state.t > state.axis[0]) drawBodies(ctx, pg, state.t, s);
+  if (bodies) drawBodies(ctx, pg, state.t, s);
   for (const p of state.plots ?? []) {
     const x = plotX(p, state.t);
     ctx.strokeStyle = '#b3261e';
