@@ -23,7 +23,7 @@ const STYLE = `
 .skv-overlay { position: absolute; left: 0; top: 0; cursor: grab; touch-action: none; }
 .skv-bar { display: flex; gap: 6px; align-items: center; }
 .skv-bar button { font: inherit; padding: 1px 8px; border: 1px solid #ccd; border-radius: 4px; background: #fff; cursor: pointer; }
-.skv-bar input { flex: 1; }
+.skv-bar input { flex: 1; min-width: 0; }
 .skv-bar a { color: #0072b2; white-space: nowrap; }
 .skv-error { color: #b3261e; font-family: ui-monospace, monospace; white-space: pre-wrap; max-width: 100%; margin: 0; }
 `;
@@ -47,6 +47,7 @@ export async function mount(element, scene, { size = 260 } = {}) {
   element.replaceChildren();
   const root = document.createElement('div');
   root.className = 'skv';
+  root.style.width = `${size}px`;
   element.append(root);
   let pg;
   try {
@@ -85,8 +86,9 @@ export async function mount(element, scene, { size = 260 } = {}) {
   slider.value = String(t0);
   slider.setAttribute('aria-label', 'Parameter t');
   const open = document.createElement('a');
-  open.href = `${new URL('index.html', import.meta.url).pathname}#scene=${encodeURIComponent(pg.scene_json())}`;
-  open.textContent = 'Open in playground';
+  open.href = `${new URL('index.html', import.meta.url).href}#scene=${encodeURIComponent(pg.scene_json())}`;
+  open.textContent = 'Playground ↗';
+  open.title = 'Open this scene in the playground';
   open.className = 'skv-open';
   bar.append(play, slider, open);
   const error = document.createElement('p');
