@@ -757,6 +757,32 @@ test('a gallery widget opens the same scene in the playground', async () => {
   await page.close();
 });
 
+test('turning the view draws at reduced resolution, the still frame at full resolution', async () => {
+  const b = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
+  const ctx = await b.newContext({ viewport: { width: 1400, height: 900 }, deviceScaleFactor: 2 });
+  const page = await ctx.newPage();
+  await openPlayground(page, `${origin}/index.html`);
+  const full = await page.evaluate(() => window.spherekitPage.size());
+  const hash = await canvasHash(page);
+  const width = () => page.evaluate(() => document.getElementById('scene').width);
+  const [x, y] = await page.evaluate(() => window.spherekitPage.emptySpot());
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let k = 1; k <= 8; k++) await page.mouse.move(x + 6 * k, y + 2 * k);
+  const moving = await width();
+  assert.ok(moving < full / 2, `reduced while moving (${moving} of ${full} px)`);
+  await page.waitForTimeout(400);
+  assert.equal(await width(), full, 'full resolution when the pointer holds still');
+  // Back to the start and release: the still frame is the one before the drag, pixel for pixel.
+  await page.mouse.move(x, y, { steps: 4 });
+  await page.mouse.up();
+  await page.click('#undo');
+  assert.equal(await width(), full);
+  assert.equal(await canvasHash(page), hash, 'the still frame after undo is the first one');
+  await ctx.close();
+  await b.close();
+});
+
 test('screenshots at 1400×900, 1024×700 and 390×844, device pixel ratio 1 and 2', async () => {
   const s3 = await readFile(path.join(goldenDir, 'compare_s3_squad_catmull_bspline_arcblend.json'), 'utf8');
   for (const dpr of [1, 2]) {

@@ -19,6 +19,7 @@ function devicePoint(ev) {
 }
 
 let drag = null;
+let still = 0;
 const pointers = new Map(); // pointerId → [clientX, clientY], for pinch
 let pinch = null;
 
@@ -97,6 +98,13 @@ function onMove(ev) {
       drag.y = y;
       state.quick = true;
       redraw(dragStep);
+      // The pointer held still: the full-resolution frame, until it moves again.
+      clearTimeout(still);
+      still = setTimeout(() => {
+        if (!drag?.moved) return;
+        state.quick = false;
+        redraw();
+      }, 150);
     }
   } else {
     hover(ev);
