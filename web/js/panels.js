@@ -3,7 +3,7 @@
 // successful edit calls; undo and redo.
 import * as sk from '../pkg/spherekit_wasm.js';
 import { $, state, attempt, commit, controlOf, hooks, parkNotice, placeNotice, showError, inSpaces, methodOf, updateHistoryButtons } from './state.js';
-import { hasPlot, redraw, drawOverlay } from './view.js';
+import { viewOptions, redraw, drawOverlay } from './view.js';
 import { curveControls } from './controls.js';
 import { aboutExample } from './examples.js';
 
@@ -105,15 +105,14 @@ function sameScene(a, b) {
 export function renderPanels() {
   parkNotice();
   const pg = state.pg;
-  const scene = JSON.parse(pg.scene_json());
   const space = pg.space();
-  $('plot').checked = hasPlot();
-  $('frames').checked = Boolean(scene.view?.frames);
-  // The renderer's default: a legend for several curves and on S³.
-  $('legend').checked = scene.view?.legend ?? (pg.curve_count() > 1 || space === 'S3');
+  // The view as the renderer draws it, its defaults filled in.
+  const view = viewOptions();
+  $('plot').checked = view.plot !== 'none';
+  $('frames').checked = view.frames > 0;
+  $('legend').checked = view.legend;
   $('frames').disabled = space !== 'S3';
-  // The renderer traces x, y and z for one S³ curve and x alone for several.
-  const axes = scene.view?.axes ?? (pg.curve_count() > 1 ? ['x'] : ['x', 'y', 'z']);
+  const { axes } = view;
   $('axes').hidden = space !== 'S3';
   for (const box of $('axes').querySelectorAll('input')) box.checked = axes.includes(box.value);
 

@@ -7,10 +7,14 @@ import * as sk from '../pkg/spherekit_wasm.js';
 import { drawBodies } from '../draw.js';
 import { $, state, fixedSize, showError } from './state.js';
 
-/** Whether the scene shows a plot under the sphere (speed, or speed and omega; the renderer's default on S³). */
+/** The view options with the renderer's defaults filled in (Rust's `view_options`). */
+export function viewOptions() {
+  return JSON.parse(state.pg.view_options()) ?? { plot: 'none', legend: false, axes: ['x'], frames: 0 };
+}
+
+/** Whether the scene shows a plot under the sphere (speed, or speed and omega). */
 export function hasPlot() {
-  const view = JSON.parse(state.pg.scene_json()).view ?? {};
-  return view.plot ? view.plot !== 'none' : state.pg.space() === 'S3';
+  return viewOptions().plot !== 'none';
 }
 
 /** The frame drawn while dragging: this fraction of the CSS width in pixels, at most QUICK_MAX
@@ -33,8 +37,9 @@ function fit() {
     : stage.clientHeight - stage.querySelector('.toolbar').offsetHeight - 16;
   // The frame's height per width: the last still frame's if it had the same plot strip (plots
   // and the legend make it taller than wide), or a guess.
-  const key = `${hasPlot()} ${state.pg.curve_count()}`;
-  const factor = state.aspect?.key === key ? state.aspect.value : hasPlot() ? 1.45 : 1.08;
+  const plot = hasPlot();
+  const key = `${plot} ${state.pg.curve_count()}`;
+  const factor = state.aspect?.key === key ? state.aspect.value : plot ? 1.45 : 1.08;
   const css = Math.max(160, Math.min(w, h / factor));
   state.base = Math.floor(css);
   state.size = Math.min(4096, Math.floor(css * state.dpr * state.zoom));

@@ -30,8 +30,8 @@ use spherekit_render::{
     Camera, PALETTE, PlotAxes, Prepared, camera_of, prepare, render_built, turn_towards,
 };
 use spherekit_scene::{
-    BuiltCurve, Document, EditError, PlotTime, SAMPLE_FIELDS, SampleOptions, Scene, SceneError,
-    Space, continuity_json, registry_json,
+    BuiltCurve, Document, EditError, Plot, PlotTime, SAMPLE_FIELDS, SampleOptions, Scene,
+    SceneError, Space, continuity_json, registry_json,
 };
 use tiny_skia::Pixmap;
 use wasm_bindgen::prelude::*;
@@ -562,6 +562,25 @@ impl Playground {
         let v = json_arg(value).map_err(js)?;
         let r = self.doc.set_view(name, v);
         self.edited(r)
+    }
+
+    /// The view options the scene is drawn with, defaults filled in, as JSON: `{ "plot":
+    /// "speed" | "omega" | "none", "legend", "axes": ["x", …], "frames" }` (the panel's
+    /// toggles show these).
+    #[must_use]
+    pub fn view_options(&self) -> String {
+        // The scene's view was checked when it was set.
+        let Ok(view) = self.doc.scene().view() else {
+            return Value::Null.to_string();
+        };
+        let plot = match view.plot {
+            Plot::Speed => "speed",
+            Plot::Omega => "omega",
+            Plot::None => "none",
+        };
+        let axes: Vec<&str> = view.axes.iter().map(|&k| ["x", "y", "z"][k % 3]).collect();
+        json!({ "plot": plot, "legend": view.legend, "axes": axes, "frames": view.frames })
+            .to_string()
     }
 
     /// The camera the scene is drawn with, `[w, x, y, z]` (the default one when the scene has

@@ -384,3 +384,32 @@ fn a_failed_beta_interpolation_reports_the_miss_distance() {
         "the approximating spline takes any β₁"
     );
 }
+
+#[wasm_bindgen_test]
+fn view_options_fill_in_the_renderers_defaults() {
+    let v = |scene: &str| -> serde_json::Value {
+        serde_json::from_str(&Playground::new(scene).unwrap().view_options()).unwrap()
+    };
+    let s2 = v(S2);
+    assert_eq!(s2["plot"], "none", "one S2 curve: no plot");
+    assert_eq!(s2["legend"], false, "nor a legend");
+    let s3 = v(S3);
+    assert_eq!(
+        (s3["plot"].as_str(), s3["legend"].as_bool()),
+        (Some("speed"), Some(true)),
+        "S3: both"
+    );
+    assert_eq!(
+        s3["axes"],
+        serde_json::json!(["x", "y", "z"]),
+        "one S3 curve traces three axes"
+    );
+    let chosen = v(
+        r#"{"space":"S3","method":"squad","points":[[1,0,0,0],[0,1,0,0]],
+        "view":{"plot":"omega","legend":false,"axes":["z"],"frames":4}}"#,
+    );
+    assert_eq!(
+        chosen,
+        serde_json::json!({"plot":"omega","legend":false,"axes":["z"],"frames":4})
+    );
+}
