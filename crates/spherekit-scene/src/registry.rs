@@ -26,6 +26,7 @@ pub static METHODS: &[&Method] = &[
     &methods::bspline_kim::METHOD,
     &methods::squad::METHOD,
     &methods::catmull_rom::METHOD,
+    &methods::catmull_rom_nlerp::METHOD,
     &methods::gamma::METHOD,
     &methods::beta::METHOD,
     &methods::arc_blend::METHOD,
