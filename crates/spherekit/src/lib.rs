@@ -140,7 +140,9 @@ pub use catmull_rom::CatmullRom;
 pub use catmull_rom_nlerp::CatmullRomNlerp;
 pub use circle::CircleArc;
 pub use continuity::{ContinuityClass, JointContinuity, continuity};
-pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
+pub use corner_blend::{
+    CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, DEFAULT_CORNER_FRACTION,
+};
 pub use cubic::{CubicEnd, CubicSolveInfo, CubicSpline, TANGENT_TOLERANCE};
 pub use curve::{Curve, Jet, Side};
 pub use error::{ArcLengthError, DomainError, PointError, SolveError, SplineError};

@@ -14,6 +14,7 @@ mod catmull_rom;
 mod catmull_rom_nlerp;
 mod classic_stress;
 mod continuity;
+mod corner_general;
 mod cubic;
 mod extrapolate;
 mod gamma_spline;
