@@ -86,6 +86,8 @@ pub enum Spheres {
     All,
     /// S³ only.
     S3,
+    /// S² only.
+    S2,
 }
 
 impl Spheres {
@@ -95,6 +97,7 @@ impl Spheres {
         match self {
             Self::All => "S2, S3, S<m>",
             Self::S3 => "S3",
+            Self::S2 => "S2",
         }
     }
 
@@ -104,6 +107,7 @@ impl Spheres {
         match self {
             Self::All => true,
             Self::S3 => space == Space::S3,
+            Self::S2 => space == Space::S2,
         }
     }
 }

@@ -12,7 +12,7 @@ use crate::arc_blend::{check_neighbours, check_order};
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::flow::{Flow, LeftMultiplication, PlaneRotation, Segment, Weights};
-use crate::knots::Knots;
+use crate::knots::{Knots, MAX_KNOT_SPACING, MIN_KNOT_SPACING};
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
 use crate::math;
 use crate::s2::S2Point;
@@ -137,6 +137,28 @@ fn check_fraction(fraction: f64) -> Result<(), SplineError> {
     }
 }
 
+/// Why the timing of a corner blend has no knots in `f64`: the first piece whose duration is
+/// outside the knot spacing range or lost to rounding next to its start.
+fn timing_error(t: &[f64], speeds: &[f64]) -> SplineError {
+    let i = (1..t.len())
+        .find(|&i| {
+            let w = t[i] - t[i - 1];
+            !(w.is_finite() && (MIN_KNOT_SPACING..=MAX_KNOT_SPACING).contains(&w))
+        })
+        .unwrap_or(1);
+    let reason = format!(
+        "piece {} of the curve (from t = {:e}) cannot be timed in f64: its angular speed {:e} makes it last {:e}; the speed is multiplied by β/α (the outgoing over the incoming cut angle) at each corner, so make the two cuts of each corner closer in angle (or the speed closer to 1)",
+        i - 1,
+        t[i - 1],
+        speeds.get(i - 1).copied().unwrap_or(f64::NAN),
+        t[i] - t[i - 1],
+    );
+    SplineError::InvalidParameter {
+        name: if i == 1 { "speed" } else { "fraction" },
+        reason,
+    }
+}
+
 /// The minor great-circle arcs `P_j → P_{j+1}` as simple rotations in their planes, with their
 /// angles.
 fn great_circle_edges<V: Ambient>(vs: &[V]) -> Result<Vec<(PlaneRotation<V>, f64)>, SplineError> {
@@ -187,10 +209,13 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
         let mut segments = Vec::with_capacity(2 * m);
         let mut t = vec![timing.start];
         let mut omega = timing.speed;
-        let mut push = |segment: Segment<V, F>, t: &mut Vec<f64>| {
+        // The angular speed of each piece at its start, for the timing error.
+        let mut speeds = Vec::with_capacity(2 * m);
+        let mut push = |segment: Segment<V, F>, t: &mut Vec<f64>, omega: f64| {
             let last = t[t.len() - 1];
             t.push(last + segment.width);
             segments.push(segment);
+            speeds.push(omega);
         };
         for (j, (flow, theta)) in edges.iter().enumerate() {
             // Straight part of edge j: from Q_j⁺ (or P_0) to Q_{j+1}⁻ (or P_M).
@@ -198,7 +223,8 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
             let in_cut = if j + 1 == m { 0.0 } else { cuts[j][0] };
             let cut_start = out_cut * theta;
             let straight = (1.0 - out_cut - in_cut) * theta;
-            if straight > 0.0 {
+            // Cuts that add up to the whole edge (to rounding) leave no straight part.
+            if straight > 4.0 * f64::EPSILON * theta {
                 push(
                     Segment {
                         base: flow.apply(cut_start, &points[j]),
@@ -209,6 +235,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
                         width: straight / omega,
                     },
                     &mut t,
+                    omega,
                 );
             }
             if j + 1 < m {
@@ -226,11 +253,15 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
                         width: alpha / omega,
                     },
                     &mut t,
+                    omega,
                 );
                 omega *= beta / alpha;
             }
         }
-        let knots = Knots::try_new(t)?;
+        let knots = match Knots::try_new(t.clone()) {
+            Ok(k) => k,
+            Err(_) => return Err(timing_error(&t, &speeds)),
+        };
         // Use the exact knot widths so that u = (t − t_i)/width is consistent with `locate`.
         for (i, s) in segments.iter_mut().enumerate() {
             s.width = knots.width(i);

@@ -411,15 +411,22 @@ fn bad_cuts_timing_and_bends_are_typed_errors() {
         },
     ));
     assert!(e.starts_with("start: must be a finite number"), "{e}");
-    // A speed so small that the knots overflow is a knot error, not a NaN.
-    let e = err(
+    // A speed so small that the knots overflow is a typed error naming the speed, not a NaN; so
+    // are cuts so lopsided that the speed they give a later edge cannot be timed.
+    let e = msg(err(
         CornerCuts::Uniform(0.2),
         CornerTiming {
             start: 0.0,
             speed: 1e-300,
         },
+    ));
+    assert!(
+        e.starts_with("speed: piece 0 of the curve (from t = 0e0) cannot be timed"),
+        "{e}"
     );
-    assert!(matches!(e, SplineError::KnotSpacing { .. }), "{e}");
+    let lopsided = CornerCuts::Pairs(vec![[1e-9, 0.5], [1e-9, 0.5], [1e-9, 0.5]]);
+    let e = msg(err(lopsided, t));
+    assert!(e.starts_with("fraction: piece"), "{e}");
     let arcs = |bends: &[f64]| {
         msg(
             CornerBlend::try_with_arcs(pts.clone(), 2, &CornerCuts::Uniform(0.2), t, bends)
