@@ -313,7 +313,11 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// corners (the book treats one; `docs/derivations.md#pobegailo-corners`). Edge `j` is the minor
 /// great-circle arc `P_j → P_{j+1}` with angle `Θ_j` and rotation group `R_j` (`R(ê_j, ·)` on S²).
 /// Each interior vertex `P_j` gets a corner blend that starts
-/// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`):
+/// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`; with
+/// [`try_with`](Self::try_with) the two fractions of each corner are chosen freely,
+/// [`CornerCuts`], and so are the start and the first speed, [`CornerTiming`]; on S²,
+/// [`try_with_arcs`](Self::try_with_arcs) takes small-circle edges;
+/// `docs/derivations.md#pobegailo-general-corners`):
 ///
 /// ```text
 /// corner j:  r(u) = R_j(w₁,ₙ(u)·β_j) · R_{j−1}(−w₁,ₙ(1 − u)·α_j) · P_j        (8.19)
@@ -321,7 +325,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// durations: an arc of angle γ lasts γ/ω; corner j lasts α_j/ω and sets ω ← ω·β_j/α_j; ω₀ = 1
 /// ```
 ///
-/// The curve starts at `P₀` at unit angular speed, follows the polyline's arcs **exactly**
+/// The curve starts at `P₀` at unit angular speed (by default), follows the polyline's arcs **exactly**
 /// outside the corner blends, and is **Cⁿ** everywhere (generically not Cⁿ⁺¹ at the junctions).
 /// With `f = 0.5` consecutive corner blends meet directly. The corner blend does not in general
 /// pass through `P_j`; for a straight vertex (continuing on the same great circle) it does.
@@ -471,7 +475,7 @@ impl CornerBlend<S2Point> {
     /// Cuts and timing are measured in the rotation angles `φ_j` about the edges' axes; the
     /// corner blend and its Cⁿ continuity are those of the great-circle case, since (8.19) and
     /// the knot rule only use that each edge is an orbit of a one-parameter rotation group
-    /// (`docs/derivations.md#pobegailo-corners`).
+    /// (`docs/derivations.md#pobegailo-general-corners`).
     ///
     /// # Errors
     ///

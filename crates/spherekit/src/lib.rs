@@ -41,7 +41,12 @@
 //! | [`CubicSpline`] | all | cubic in the tangent space of each key, key velocities solved for C² (scipy's `RotationSpline` on S³); natural, clamped, scipy ends or closed | C² |
 //! | [`BetaSpline`] | all | spherical Beta spline (bias β₁, tension β₂) with a Newton interpolation solver | G¹ |
 //! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
-//! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline | Cⁿ |
+//! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline (S²: also of small-circle arcs), cuts per corner and side, start and speed ([`CornerCuts`], [`CornerTiming`]) | Cⁿ |
+//!
+//! The foundations these build on are public too: quaternion algebra ([`quaternion`]: the
+//! ternary product, orthogonal complement and quotient, the 4×4 multiplication matrices), the
+//! exponential of so(3) ([`exp_so3`], [`rotation_derivative`], [`skew`]), circles as planar
+//! sections ([`PlaneSection`]) and the Bernstein polynomials ([`bernstein`]).
 //!
 //! Each type's documentation gives the formula, its source (the publication, with section and
 //! equation numbers) and the corrections the sources needed. The repository's
