@@ -139,7 +139,7 @@ impl<P: Manifold> CatmullRomNlerp<P> {
                 .iter()
                 .map(|x| x.dot(&m))
                 .fold(f64::INFINITY, f64::min);
-            if !(lowest > 1e-12 * m.length()) {
+            if lowest.is_nan() || lowest <= 1e-12 * m.length() {
                 return Err(SplineError::ThroughOrigin { index: i + 1 });
             }
             ratios.push(r);

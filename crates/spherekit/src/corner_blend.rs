@@ -518,7 +518,7 @@ impl CornerBlend<S2Point> {
                 bends.len()
             )));
         }
-        if let Some(j) = bends.iter().position(|b| !(b.abs() < 1.0)) {
+        if let Some(j) = bends.iter().position(|b| b.is_nan() || b.abs() >= 1.0) {
             return Err(bend_error(format!(
                 "entry {j} (the edge from point {j}): must be in (−1, 1), got {}",
                 bends[j]

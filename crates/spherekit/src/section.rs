@@ -137,7 +137,7 @@ impl PlaneSection<DVec4> {
         let (mh, d1) = (m / lm, d[0] / lm);
         let w = n - mh * n.dot(mh);
         let lw = w.length();
-        if !(lw > 1e-12 * n.length()) {
+        if lw.is_nan() || lw <= 1e-12 * n.length() {
             return Err(SplineError::InvalidParameter {
                 name: "normals",
                 reason: "must be linearly independent".into(),

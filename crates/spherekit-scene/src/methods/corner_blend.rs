@@ -113,7 +113,7 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     };
     let bends = match input.points {
         Points::S2(_) => match input.params.number_or_list("bend")? {
-            NumberOrList::One(b) if b == 0.0 => None,
+            NumberOrList::One(0.0) => None,
             NumberOrList::One(b) => Some(vec![b; count.saturating_sub(1)]),
             NumberOrList::List(v) => Some(v),
         },

@@ -154,7 +154,7 @@ fn uniform_per_corner_and_pair_cuts_agree() {
 }
 
 /// Timing: the curve with start s and speed v is the unit-speed curve reparametrised,
-/// `c_{s,v}(t) = c(v·(t − s))`; the speed after corner j is the speed before it times β_j/α_j
+/// `c_{s,v}(t) = c(v·(t − s))`; the speed after corner j is the speed before it times `β_j/α_j`
 /// (the book's t₃, t₄ rule), so equal cut angles keep the speed.
 #[test]
 fn timing_start_and_speed() {
@@ -243,8 +243,8 @@ fn single_corner_with_free_cut_points_matches_algorithm_8_2() {
 }
 
 /// Each corner blend stays in the cap about its corner through its cut points: a rotation by
-/// an angle x moves no point farther than x, so the distance from P_j is at most
-/// w₁(1 − u)α_j + w₁(u)β_j ≤ (1 − u)α_j + uβ_j.
+/// an angle x moves no point farther than x, so the distance from `P_j` is at most
+/// `w₁(1 − u)α_j + w₁(u)β_j ≤ (1 − u)α_j + uβ_j`.
 #[test]
 fn corner_blend_stays_between_its_cut_points() {
     let mut rng = Rng::new(47);

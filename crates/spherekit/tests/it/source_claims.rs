@@ -137,7 +137,7 @@ fn poly_derivative(c: &[f64], k: usize, u: f64) -> f64 {
     let mut sum = 0.0;
     for (j, &cj) in c.iter().enumerate().skip(k) {
         let falling: f64 = (0..k).map(|i| (j - i) as f64).product();
-        sum += cj * falling * u.powi((j - k) as i32);
+        sum += cj * falling * (0..j - k).map(|_| u).product::<f64>();
     }
     sum
 }
@@ -154,7 +154,7 @@ fn bump(n: usize, e: usize) -> Vec<f64> {
     c
 }
 
-/// Theorems 6 and 7 (§7.7): w₁,ₙ and w₂,ₙ minimise J_n(f) = ∫₀¹ (f^{(n+1)})² du under their
+/// Theorems 6 and 7 (§7.7): w₁,ₙ and w₂,ₙ minimise `J_n(f) = ∫₀¹ (f^{(n+1)})² du` under their
 /// boundary conditions. The minima are J = 4, 192, 25 920, 6 451 200 for n = 1…4 (the same for
 /// both), the first variation vanishes along every admissible perturbation
 /// h = u^{n+1}(1 − u)^{n+1}q(u) (q = 1, u, u²), and J grows in every such direction.
