@@ -164,16 +164,22 @@ impl<P: Manifold> CatmullRomNlerp<P> {
         self.knots.as_slice()
     }
 
+    /// `Σⱼ w[j]·scale·cᵢ₋₁₊ⱼ`: the ambient point or one of its derivatives on segment `i`.
+    fn combine(&self, i: usize, w: [f64; 4], scale: f64) -> P::Vector {
+        (0..4).fold(self.vectors[i].zeros_like(), |acc, j| {
+            acc + self.vectors[i + j].clone() * (w[j] * scale)
+        })
+    }
+
     /// The ambient (unnormalised) point `c(t)` and its first two derivatives in `t`.
     fn ambient(&self, i: usize, tau: f64) -> [P::Vector; 3] {
-        let w = weights(tau, self.ratios[i]);
+        let [w0, w1, w2] = weights(tau, self.ratios[i]);
         let inv = 1.0 / self.knots.width(i);
-        let scale = [1.0, inv, inv * inv];
-        core::array::from_fn(|order| {
-            (0..4).fold(self.vectors[i].zeros_like(), |acc, j| {
-                acc + self.vectors[i + j].clone() * (w[order][j] * scale[order])
-            })
-        })
+        [
+            self.combine(i, w0, 1.0),
+            self.combine(i, w1, inv),
+            self.combine(i, w2, inv * inv),
+        ]
     }
 
     fn jet_local(&self, i: usize, tau: f64) -> Jet<P> {
@@ -210,7 +216,7 @@ impl<P: Manifold> Curve for CatmullRomNlerp<P> {
 
     fn eval(&self, t: f64) -> P {
         let (i, tau) = self.knots.locate(t, Side::Right);
-        let [c, _, _] = self.ambient(i, tau);
+        let c = self.combine(i, weights(tau, self.ratios[i])[0], 1.0);
         let r = c.length();
         P::from_vector_unchecked(c * (1.0 / r))
     }
