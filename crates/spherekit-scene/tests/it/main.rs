@@ -10,6 +10,7 @@
 )]
 
 mod batch;
+mod corner_params;
 mod registry;
 mod scene_sample;
 #[path = "../support/cases.rs"]

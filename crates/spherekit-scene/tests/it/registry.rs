@@ -115,6 +115,7 @@ fn descriptors_match_the_constructions() {
         let spaces: &[&str] = match m.spheres {
             Spheres::All => &["S2", "S3", "S5"],
             Spheres::S3 => &["S3"],
+            Spheres::S2 => &["S2"],
         };
         for space in spaces {
             let build = |n: usize, knots: Option<Vec<f64>>| {
