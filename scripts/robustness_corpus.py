@@ -285,9 +285,28 @@ def cases():
                             ("0", 0.0)]:
             yield f"corner_blend_{sp}_fraction_{label}", scene(
                 space, "corner-blend", pts, params={"fraction": frac}, samples=129)
+        # Cuts per corner and side, and the timing (6 points: 4 corners).
+        for label, params in [
+            ("cuts_per_corner", {"fraction": [0.1, 0.45, 0.3, 0.2]}),
+            ("cuts_pairs_whole_edges", {"fraction": [0.1, 0.05, 0.3, 0.2], "fraction_out": [0.95, 0.7, 0.7, 0.95]}),
+            ("cuts_pairs_1e-9", {"fraction": 1e-9, "fraction_out": 0.5}),
+            ("cuts_overlap", {"fraction": [0.1, 0.6, 0.3, 0.2], "fraction_out": 0.5}),
+            ("cuts_out_of_range", {"fraction": [0.1, 1.0, 0.3, 0.2]}),
+            ("cuts_wrong_length", {"fraction": [0.1, 0.2]}),
+            ("speed_1e-6", {"speed": 1e-6}),
+            ("speed_1e6", {"speed": 1e6}),
+            ("speed_0", {"speed": 0.0}),
+            ("start_negative_1e6", {"start": -1e6}),
+        ]:
+            yield f"corner_blend_{sp}_{label}", scene(space, "corner-blend", pts, params=params, samples=129)
         for order in [1, 10]:
             yield f"arc_blend_{sp}_order_{order}", scene(space, "arc-blend", pts, params={"order": order}, samples=129)
             yield f"corner_blend_{sp}_order_{order}", scene(space, "corner-blend", pts, params={"order": order}, samples=129)
+    # Small-circle legs (S2 only): one bend for all edges, one per edge, next to ±1.
+    pts = generic("S2", 6)
+    for label, bend in [("0.9", 0.9), ("per_edge", [0.5, -0.5, 0.9, -0.9, 0.0]),
+                        ("1_minus_1e-12", 1.0 - 1e-12), ("1", 1.0), ("wrong_length", [0.1, 0.2])]:
+        yield f"corner_blend_s2_bend_{label}", scene("S2", "corner-blend", pts, params={"bend": bend}, samples=129)
     pts = generic("S3", 7)
     for name, g in [("gamma_1e-9", 1e-9), ("gamma_1e-300", 1e-300), ("gamma_1e6", 1e6), ("gamma_1e12", 1e12),
                     ("gamma_0", 0.0), ("gamma_negative", -1.0), ("gamma_per_joint_extreme", [1e-9, 1e6, 1e-9])]:
@@ -355,10 +374,25 @@ def expect_err(name):
         return "params.beta2: must be ≥ 0"
     if name.endswith(("_fraction_0", "_fraction_0.5_plus_1e-12")):
         return "params.fraction: must be in (0, 0.5]"
+    if name.endswith("_cuts_pairs_1e-9"):
+        # The speed grows ×5·10⁸ at each corner: the later pieces cannot be timed in f64.
+        return "params.fraction: piece"
+    if name.endswith("_cuts_overlap"):
+        return "params.fraction: entries 0 and 1 overlap on the edge from point 1 to point 2"
+    if name.endswith("_cuts_out_of_range"):
+        return "params.fraction: entry 1 (the corner at point 2): the incoming cut must be in (0, 1)"
+    if name.endswith("_cuts_wrong_length"):
+        return "params.fraction: expected 4 entries (one per corner, the points 1 to 4), got 2"
+    if name.endswith("_speed_0"):
+        return "params.speed: must be a positive number"
+    if name == "corner_blend_s2_bend_1":
+        return "params.bend: entry 0 (the edge from point 0): must be in (−1, 1)"
+    if name == "corner_blend_s2_bend_wrong_length":
+        return "params.bend: expected 5 values (one per edge), got 2"
     if "_gamma_0" in name or "_gamma_negative" in name:
         return "params.gamma: must be finite and positive"
     if name == "compare_s2_identical_keys_every_method":
-        return "curves[4].points[1] and points[2] " + COINCIDE
+        return "curves[5].points[1] and points[2] " + COINCIDE
     return None
 
 
@@ -425,7 +459,7 @@ def bad_cases():
         ("knots_1e400", "{" + S2 + ',"knots":[0,1,1e400]}', "knots[2]: number out of range"),
         ("samples_1e400", "{" + S2 + ',"samples":1e400}', "samples: number out of range"),
         ("eval_at_1e400", "{" + S2 + ',"eval_at":[0,1e400]}', "eval_at[1]: number out of range"),
-        ("param_nan_string", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"fraction":"NaN"}}', "params.fraction: must be a finite number"),
+        ("param_nan_string", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"fraction":"NaN"}}', "params.fraction: must be a number or a list of numbers"),
         ("beta1_1e400", '{"space":"S2","method":"beta","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"beta1":1e400}}', "params.beta1: number out of range"),
         # Points.
         ("points_empty", '{"space":"S2","method":"geodesic","points":[]}', "needs at least 2 points, got 0"),

@@ -1,16 +1,17 @@
 // Drawing over the rendered image, shared by the playground and the docs widget: the body
-// rotating by an S³ curve (its axis triad) or a point moving along an S² curve at the fraction
-// u of the domain. Positions come from the wasm handle (eval, project); no math here.
+// rotating by an S³ curve (its axis triad) or a point moving along an S² curve at time t on
+// the scene's time axis (pg.time_axis(): the curves' own t). Positions come from the wasm
+// handle (eval, project); no math here.
 
 const AXIS_COLORS = ['#d55e00', '#009e73', '#0072b2'];
 
-/** Draws every curve's moving body or point at fraction `u` on a 2D context. */
-export function drawBodies(ctx, pg, u, size) {
+/** Draws every curve's moving body or point at time `t` (each curve clamped to its domain) on a 2D context. */
+export function drawBodies(ctx, pg, t, size) {
   const k = size / 512;
   const colors = JSON.parse(pg.colors());
   const several = pg.curve_count() > 1;
   for (let c = 0; c < pg.curve_count(); c++) {
-    const v = pg.eval(c, u);
+    const v = pg.eval(c, t);
     if (v.length === 13) {
       // S³: a rigid body, its axis triad from the centre to the rotated tips (far ones first).
       const o = pg.project(0, 0, 0, size);

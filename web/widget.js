@@ -1,4 +1,5 @@
-// spherekit docs widget: a small interactive view of one scene (drag to turn, play to animate).
+// spherekit docs widget: a small interactive view of one scene (drag to turn, play to animate,
+// a link that opens the same scene in the playground).
 //
 //   <script type="module" src="widget.js"></script>
 //   <spherekit-view size="260" scene='{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}'></spherekit-view>
@@ -22,7 +23,8 @@ const STYLE = `
 .skv-overlay { position: absolute; left: 0; top: 0; cursor: grab; touch-action: none; }
 .skv-bar { display: flex; gap: 6px; align-items: center; }
 .skv-bar button { font: inherit; padding: 1px 8px; border: 1px solid #ccd; border-radius: 4px; background: #fff; cursor: pointer; }
-.skv-bar input { flex: 1; }
+.skv-bar input { flex: 1; min-width: 0; }
+.skv-bar a { color: #0072b2; white-space: nowrap; }
 .skv-error { color: #b3261e; font-family: ui-monospace, monospace; white-space: pre-wrap; max-width: 100%; margin: 0; }
 `;
 
@@ -45,6 +47,7 @@ export async function mount(element, scene, { size = 260 } = {}) {
   element.replaceChildren();
   const root = document.createElement('div');
   root.className = 'skv';
+  root.style.width = `${size}px`;
   element.append(root);
   let pg;
   try {
@@ -73,25 +76,32 @@ export async function mount(element, scene, { size = 260 } = {}) {
   play.type = 'button';
   play.textContent = '▶';
   play.title = 'Play';
+  // t in the curves' own units, over the scene's time axis (as in the playground).
+  const [t0, t1] = Array.from(pg.time_axis());
   const slider = document.createElement('input');
   slider.type = 'range';
-  slider.min = '0';
-  slider.max = '1';
-  slider.step = '0.001';
-  slider.value = '0';
+  slider.min = String(t0);
+  slider.max = String(t1);
+  slider.step = 'any';
+  slider.value = String(t0);
   slider.setAttribute('aria-label', 'Parameter t');
-  bar.append(play, slider);
+  const open = document.createElement('a');
+  open.href = `${new URL('index.html', import.meta.url).href}#scene=${encodeURIComponent(pg.scene_json())}`;
+  open.textContent = 'Playground ↗';
+  open.title = 'Open this scene in the playground';
+  open.className = 'skv-open';
+  bar.append(play, slider, open);
   const error = document.createElement('p');
   error.className = 'skv-error';
   error.hidden = true;
   root.append(stage, bar, error);
 
-  let u = 0;
+  let t = t0;
   let playing = false;
   const drawOverlay = () => {
     const ctx = overlay.getContext('2d');
     ctx.clearRect(0, 0, overlay.width, overlay.height);
-    if (playing || u > 0) drawBodies(ctx, pg, u, px);
+    if (playing || t > t0) drawBodies(ctx, pg, t, px);
   };
   const redraw = () => {
     try {
@@ -135,9 +145,11 @@ export async function mount(element, scene, { size = 260 } = {}) {
   let last = 0;
   const tick = (now) => {
     if (!playing || !element.isConnected) return;
-    u = (u + (last ? (now - last) / 4000 : 0)) % 1;
+    // Four seconds for the whole time axis.
+    t += last ? ((now - last) / 4000) * (t1 - t0) : 0;
+    if (t > t1) t = t0 + ((t - t0) % (t1 - t0 || 1));
     last = now;
-    slider.value = String(u);
+    slider.value = String(t);
     drawOverlay();
     requestAnimationFrame(tick);
   };
@@ -149,7 +161,7 @@ export async function mount(element, scene, { size = 260 } = {}) {
     if (playing) requestAnimationFrame(tick);
   });
   slider.addEventListener('input', () => {
-    u = Number(slider.value);
+    t = Number(slider.value);
     drawOverlay();
   });
 

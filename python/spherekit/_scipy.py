@@ -47,8 +47,18 @@ def _quats(rotations, who):
 
 
 def _rotations(q):
-    """Scalar-last quaternions as a scipy ``Rotation`` when scipy is importable."""
-    return q if _Rotation is None else _Rotation.from_quat(q)
+    """Scalar-last quaternions as a scipy ``Rotation`` when scipy is importable.
+
+    The spline's quaternions are unit to rounding, so scipy's normalisation (most of the cost
+    of ``Rotation.from_quat`` on large batches) is skipped where scipy's constructor offers it
+    (``normalize=False, copy=False``, scipy 1.10 and later).
+    """
+    if _Rotation is None:
+        return q
+    try:
+        return _Rotation(q, normalize=False, copy=False)
+    except TypeError:  # pragma: no cover - scipy without the keywords
+        return _Rotation.from_quat(q)
 
 
 class RotationSpline:

@@ -63,6 +63,15 @@ def test_render_and_png(tmp_path):
         spherekit.render(pathlib.Path(scene), size=-1)
 
 
+@pytest.mark.parametrize("name", ["squad_s3", "bezier_s2_cubic", "figure_legend_labels_s2"])
+def test_render_png_writes_the_bytes_of_the_cli(tmp_path, name):
+    """The golden PNGs are the CLI's output at 384 px; the module encodes with the same encoder."""
+    golden = pathlib.Path(REPO, "tests", "golden")
+    out = tmp_path / f"{name}.png"
+    spherekit.render_png(golden / f"{name}.json", out, size=384)
+    assert out.read_bytes() == (golden / f"{name}.png").read_bytes()
+
+
 def test_methods_is_the_registry():
     methods = spherekit.methods()
     ids = [m["id"] for m in methods]

@@ -485,6 +485,326 @@ test('Chromium parses and draws every SVG golden (spherekit render -o x.svg)', a
   await page.close();
 });
 
+
+const SIZES = [{ width: 1400, height: 900 }, { width: 1024, height: 700 }, { width: 390, height: 844 }];
+
+/** Whether element `selector` is shown and lies inside the viewport. */
+async function visibleInViewport(page, selector) {
+  return page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    if (!el || el.hidden) return { ok: false, why: 'hidden' };
+    const r = el.getBoundingClientRect();
+    const ok = r.width > 0 && r.height > 0 && r.left >= 0 && r.top >= 0 && r.right <= innerWidth && r.bottom <= innerHeight;
+    return { ok, why: JSON.stringify({ left: r.left, top: r.top, right: r.right, bottom: r.bottom, w: innerWidth, h: innerHeight }) };
+  }, selector);
+}
+
+const frames = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+test('every failing action shows its message inside the viewport, where the action was', async () => {
+  const beta = await readFile(path.join(goldenDir, 'beta_s2_example1.json'), 'utf8');
+  for (const vp of SIZES) {
+    const page = await newPage(vp);
+    const where = `${vp.width}x${vp.height}`;
+    // 1. A broken scene in the JSON box: the message beside the Apply button.
+    await openPlayground(page, sceneUrl(beta));
+    await page.locator('#json').scrollIntoViewIfNeeded();
+    await page.fill('#json', '{"space": "S2", ');
+    await page.click('#apply-json');
+    assert.match(await page.textContent('#error'), /^error: invalid scene JSON: /, where);
+    let v = await visibleInViewport(page, '#notice');
+    assert.ok(v.ok, `${where} apply: the message is inside the viewport ${v.why}`);
+    assert.ok(await page.evaluate(() => document.getElementById('json-actions').nextElementSibling?.id === 'notice'), `${where}: beside the Apply button`);
+    // 2. A β₁ the points cannot take: the slider stays, marked; the words and the miss distance.
+    const slider = page.locator('#curves input[type=range]').first();
+    await slider.scrollIntoViewIfNeeded();
+    await slider.evaluate((el) => {
+      el.value = '1.5';
+      el.dispatchEvent(new Event('input', { bubbles: true }));
+      el.dispatchEvent(new Event('change', { bubbles: true }));
+    });
+    assert.match(await page.textContent('#error'), /did not converge/, where);
+    const help = await page.textContent('#error-help');
+    assert.match(help, /^No Beta spline with these β passes through the points: the nearest one found misses a point by \d\.\d+ rad \(\d+°\)/, `${where}: ${help}`);
+    v = await visibleInViewport(page, '#notice');
+    assert.ok(v.ok, `${where} slider: the message is inside the viewport ${v.why}`);
+    assert.equal(await slider.evaluate((el) => el.closest('[aria-invalid="true"]') !== null), true, `${where}: the slider is marked`);
+    assert.equal(await slider.inputValue(), '1.5', `${where}: the slider is not snapped back`);
+    assert.equal(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).params.beta1, 1, 'the scene keeps its last good β₁');
+    // The offer: the approximating spline with the β₁ asked for.
+    await page.click('#error-offer');
+    assert.equal(await page.locator('#notice').isHidden(), true, `${where}: the message goes once the edit succeeds`);
+    const params = JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).params;
+    assert.deepEqual([params.beta1, params.interpolate], [1.5, false], `${where}: approximating with β₁ = 1.5`);
+    assert.equal(await page.locator('[aria-invalid="true"]').count(), 0, 'no control is marked any more');
+    // 3. Deleting below the minimum (two points): the message beside the point editor.
+    await openPlayground(page, sceneUrl('{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}'));
+    await page.evaluate(() => window.scrollTo(0, 0));
+    const [x, y] = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 1));
+    await page.mouse.click(x, y);
+    assert.equal(await page.textContent('#point-editor p'), 'curve 0, point 1', `${where}: the point is selected`);
+    await page.keyboard.press('Delete');
+    assert.match(await page.textContent('#error'), /^error: /, `${where}: deleting below the minimum is refused`);
+    v = await visibleInViewport(page, '#notice');
+    assert.ok(v.ok, `${where} delete: the message is inside the viewport ${v.why}`);
+    // 4. A broken URL fragment: over the stage.
+    await page.evaluate(() => { location.hash = `#scene=${encodeURIComponent('{"space":"S2","method":"geodesic","points":[[1,0,0],[0,0,0]]}')}`; });
+    await page.waitForFunction(() => document.getElementById('error').textContent.includes('zero length'));
+    v = await visibleInViewport(page, '#notice');
+    assert.ok(v.ok, `${where} fragment: the message is inside the viewport ${v.why}`);
+    assert.equal(await page.evaluate(() => document.getElementById('notice').className), 'over-stage');
+    await page.screenshot({ path: path.join(outDir, `playground-error-${where}.png`) });
+    assert.deepEqual(page.errors, [], 'no page errors');
+    await page.close();
+  }
+});
+
+test('the layout: the sphere fills a phone, a small laptop screen does not scroll', async () => {
+  const phone = await newPage({ width: 390, height: 844 });
+  await openPlayground(phone, `${origin}/index.html`);
+  const width = await phone.evaluate(() => document.getElementById('scene').getBoundingClientRect().width);
+  assert.ok(width >= 330, `the sphere is ${width} px wide at 390 px`);
+  // After a resize too.
+  await phone.setViewportSize({ width: 600, height: 844 });
+  await frames(phone);
+  const wider = await phone.evaluate(() => document.getElementById('scene').getBoundingClientRect().width);
+  assert.ok(wider >= 520, `the sphere is ${wider} px wide at 600 px`);
+  await phone.close();
+  const laptop = await newPage({ width: 1024, height: 700 });
+  for (const name of ['cubic_s2', 'compare_s3_squad_catmull_bspline_arcblend', 'figure_omega_s3']) {
+    const text = await readFile(path.join(goldenDir, `${name}.json`), 'utf8');
+    await openPlayground(laptop, sceneUrl(text));
+    const m = await laptop.evaluate(() => ({ h: document.documentElement.scrollHeight, w: document.documentElement.scrollWidth }));
+    assert.ok(m.h <= 700 && m.w <= 1024, `${name}: the page does not scroll at 1024×700 (${m.w}×${m.h})`);
+    const stage = await laptop.evaluate(() => document.getElementById('canvas-wrap').getBoundingClientRect().bottom);
+    assert.ok(stage <= 700, `${name}: the figure is on screen (bottom ${stage})`);
+  }
+  assert.deepEqual(laptop.errors, [], 'no page errors');
+  await laptop.close();
+});
+
+test('the first screen: an S² example, a sentence, three steps, examples grouped by method', async () => {
+  const page = await newPage({ width: 1400, height: 900 });
+  await openPlayground(page, `${origin}/index.html`);
+  assert.equal(await page.evaluate(() => window.spherekitPage.handle().space()), 'S2');
+  assert.ok((await page.textContent('#intro')).length > 40, 'one sentence on what the page is');
+  assert.equal(await page.locator('#try li').count(), 3, 'three "try this" steps');
+  const groups = await page.$$eval('#preset optgroup', (gs) => gs.map((g) => ({ label: g.label, items: [...g.children].map((o) => ({ text: o.textContent, title: o.title })) })));
+  assert.ok(groups.length >= 10, `grouped (${groups.map((g) => g.label).join(', ')})`);
+  for (const g of groups) {
+    for (const it of g.items) {
+      assert.doesNotMatch(it.text, /_|example\d/, `${g.label}: "${it.text}" is a readable name`);
+      assert.ok(it.title.length > 10, `${g.label}: "${it.text}" has a description`);
+    }
+  }
+  assert.ok(groups.some((g) => g.label === 'beta') && groups.some((g) => g.label === 'Comparisons'), 'method groups and comparisons');
+  assert.ok((await page.textContent('#preset-about')).length > 10, 'the example says what it shows');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('undo restores the scene exactly after a drag; redo; reset view; zoom; hover', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const text = await readFile(path.join(goldenDir, 'geodesic_s2.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  const scene = () => page.evaluate(() => window.spherekitPage.handle().scene_json());
+  const original = await scene();
+  assert.equal(await page.isDisabled('#undo'), true, 'nothing to undo at first');
+  // Hover over a point: the pointer cursor and a ring.
+  const [x, y] = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 2));
+  await page.mouse.move(x + 40, y + 40);
+  await page.mouse.move(x, y);
+  assert.equal(await page.evaluate(() => getComputedStyle(document.getElementById('overlay')).cursor), 'pointer', 'pointer cursor over a point');
+  await page.mouse.move(x + 60, y + 60);
+  assert.equal(await page.evaluate(() => getComputedStyle(document.getElementById('overlay')).cursor), 'grab', 'grab elsewhere on the sphere');
+  // Drag the point, then undo: the scene text is the original, byte for byte.
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) await page.mouse.move(x + 5 * k, y + 3 * k);
+  await page.mouse.up();
+  const dragged = await scene();
+  assert.notEqual(dragged, original, 'the drag changed the scene');
+  await page.click('#undo');
+  assert.equal(await scene(), original, 'undo restores the scene exactly');
+  await page.click('#redo');
+  assert.equal(await scene(), dragged, 'redo brings the drag back');
+  await page.locator('#overlay').focus().catch(() => {});
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('Control+z');
+  assert.equal(await scene(), original, 'Ctrl+Z undoes');
+  await page.keyboard.press('Control+Shift+Z');
+  assert.equal(await scene(), dragged, 'Ctrl+Shift+Z redoes');
+  // A parameter edit and a method change are undoable too.
+  await page.locator('#curves select').first().selectOption('catmull-rom');
+  assert.equal(JSON.parse(await scene()).method, 'catmull-rom');
+  await page.click('#undo');
+  assert.equal(await scene(), dragged, 'undo of a method change');
+  // Turn the view, zoom with the wheel, reset the view.
+  const box = await page.locator('#overlay').boundingBox();
+  const spot = await page.evaluate(() => window.spherekitPage.emptySpot());
+  await page.mouse.move(...spot);
+  await page.mouse.down();
+  await page.mouse.move(spot[0] + 60, spot[1] + 20, { steps: 5 });
+  await page.mouse.up();
+  const turned = JSON.parse(await scene()).view.camera;
+  assert.ok(turned, 'the camera is in the scene');
+  await page.mouse.move(box.x + box.width / 2, box.y + box.width / 2);
+  await page.mouse.wheel(0, -300);
+  await page.waitForTimeout(300);
+  const zoom = await page.evaluate(() => window.spherekitPage.zoom());
+  assert.ok(zoom > 1.3, `the wheel zooms in (${zoom})`);
+  assert.ok((await page.evaluate(() => window.spherekitPage.size())) > (await page.evaluate(() => document.getElementById('canvas-wrap').clientWidth)), 'drawn larger than the stage');
+  await page.screenshot({ path: path.join(outDir, 'playground-zoomed.png') });
+  // Pinch: two touch pointers moving apart zoom in further, moving together zoom out.
+  const pinch = (spread0, spread1) => page.evaluate(async ([a, b]) => {
+    const el = document.getElementById('overlay');
+    const r = el.getBoundingClientRect();
+    const [cx, cy] = [r.left + r.width / 2, r.top + r.width / 2];
+    const send = (type, id, dx) => el.dispatchEvent(new PointerEvent(type, { pointerId: id, pointerType: 'touch', isPrimary: id === 11, clientX: cx + dx, clientY: cy, bubbles: true }));
+    send('pointerdown', 11, -a);
+    send('pointerdown', 12, a);
+    for (let k = 1; k <= 5; k++) {
+      const d = a + ((b - a) * k) / 5;
+      send('pointermove', 11, -d);
+      send('pointermove', 12, d);
+      await new Promise((res) => requestAnimationFrame(res));
+    }
+    send('pointerup', 11, -b);
+    send('pointerup', 12, b);
+    await new Promise((res) => setTimeout(res, 250));
+    return window.spherekitPage.zoom();
+  }, [spread0, spread1]);
+  const pinched = await pinch(40, 60);
+  assert.ok(pinched > zoom * 1.3, `pinching out zooms in (${zoom} → ${pinched})`);
+  const unpinched = await pinch(60, 30);
+  assert.ok(unpinched < pinched * 0.6, `pinching in zooms out (${pinched} → ${unpinched})`);
+  await page.click('#reset-view');
+  assert.equal(await page.evaluate(() => window.spherekitPage.zoom()), 1, 'reset view: zoom 1');
+  assert.equal(JSON.parse(await scene()).view.camera, undefined, 'reset view: the default camera');
+  await page.click('#undo');
+  assert.deepEqual(JSON.parse(await scene()).view.camera, turned, 'undo of reset view');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('one t: the slider in curve units, the plot scrub, the readout, reset on a new scene', async () => {
+  const page = await newPage({ width: 1400, height: 900 });
+  const text = await readFile(path.join(goldenDir, 'squad_s3_nonuniform.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  const axis = await page.evaluate(() => window.spherekitPage.axis());
+  assert.ok(axis[1] > 1, `the time axis is in the curve's units (${axis})`);
+  assert.equal(Number(await page.getAttribute('#t', 'max')), axis[1], 'the slider spans the time axis');
+  // Click on the plot at t = 0.4 of the axis, then drag along it.
+  const target = axis[0] + 0.4 * (axis[1] - axis[0]);
+  const [px, py] = await page.evaluate((t) => window.spherekitPage.plotPointOnScreen(t), target);
+  await page.mouse.click(px, py);
+  const t1 = await page.evaluate(() => window.spherekitPage.t());
+  assert.ok(Math.abs(t1 - target) < 0.02 * (axis[1] - axis[0]), `a click on the plot sets t (${t1} for ${target})`);
+  assert.equal(Number(await page.inputValue('#t')).toFixed(6), t1.toFixed(6), 'the slider follows');
+  const [qx, qy] = await page.evaluate((t) => window.spherekitPage.plotPointOnScreen(t), axis[0] + 0.8 * (axis[1] - axis[0]));
+  await page.mouse.move(px, py);
+  await page.mouse.down();
+  await page.mouse.move(qx, qy, { steps: 6 });
+  await page.mouse.up();
+  const t2 = await page.evaluate(() => window.spherekitPage.t());
+  assert.ok(t2 > t1 + 0.3 * (axis[1] - axis[0]), `dragging on the plot scrubs (${t1} → ${t2})`);
+  // The readout at t: finite numbers, the same t; ω and α in the body frame on request.
+  const readout = await page.evaluate(() => window.spherekitPage.readouts());
+  assert.equal(readout.length, 1);
+  const r = readout[0];
+  assert.ok(Math.abs(r.t - t2) < 1e-9, 'the readout is at the page t');
+  for (const v of [...r.point, r.speed, ...r.omega, ...r.alpha]) assert.ok(Number.isFinite(v), `finite: ${JSON.stringify(r)}`);
+  assert.ok(Math.abs(Math.hypot(...r.omega) - r.speed) < 1e-9, '|ω| is the angular speed');
+  const shown = await page.textContent('#readout');
+  assert.match(shown, /ω space/);
+  assert.doesNotMatch(shown, /NaN|undefined/);
+  await page.check('input[name=frame][value=body]');
+  const body = (await page.evaluate(() => window.spherekitPage.readouts()))[0];
+  assert.match(await page.textContent('#readout'), /ω body/);
+  assert.ok(Math.abs(Math.hypot(...body.omega) - r.speed) < 1e-9, 'the body frame has the same |ω|');
+  // A new scene puts t back to the start of its axis.
+  await page.selectOption('#preset', 'cubic_s2');
+  const fresh = await page.evaluate(() => ({ t: window.spherekitPage.t(), axis: window.spherekitPage.axis() }));
+  assert.equal(fresh.t, fresh.axis[0], 'reset on a new scene');
+  assert.equal(await page.textContent('#t-out'), `t = ${fresh.axis[0].toFixed(3)}`);
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('the continuity class goes beyond C²', async () => {
+  const page = await newPage();
+  const scene = { space: 'S2', method: 'corner-blend', points: [[1, 0, 0], [0, 1, 0], [0, 0, 1], [-1, 0.2, 0]], params: { order: 10 } };
+  await openPlayground(page, sceneUrl(JSON.stringify(scene)));
+  const classes = await page.$$eval('#continuity tbody tr', (rows) => rows.map((r) => r.cells[5].textContent));
+  assert.ok(classes.length > 0, 'joints are listed');
+  for (const c of classes) assert.doesNotMatch(c, /^C[⁰¹²]?$|^G/, `order 10 is reported beyond C² (${classes})`);
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('a gallery widget opens the same scene in the playground', async () => {
+  const page = await newPage({ width: 1100, height: 900 });
+  await page.goto(`${origin}/docs.html`);
+  await page.waitForFunction(() => [...document.querySelectorAll('spherekit-view')].every((w) => w.dataset.state));
+  const first = page.locator('spherekit-view').first();
+  const scene = await first.getAttribute('scene');
+  await first.locator('a.skv-open').click();
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  const shown = await page.evaluate(() => window.spherekitPage.handle().scene_json());
+  assert.deepEqual(JSON.parse(shown), JSON.parse(scene), 'the playground shows the widget scene');
+  assert.equal(await page.textContent('#error'), '');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('turning the view draws at reduced resolution, the still frame at full resolution', async () => {
+  const b = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
+  const ctx = await b.newContext({ viewport: { width: 1400, height: 900 }, deviceScaleFactor: 2 });
+  const page = await ctx.newPage();
+  await openPlayground(page, `${origin}/index.html`);
+  const full = await page.evaluate(() => window.spherekitPage.size());
+  const hash = await canvasHash(page);
+  const width = () => page.evaluate(() => document.getElementById('scene').width);
+  const [x, y] = await page.evaluate(() => window.spherekitPage.emptySpot());
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let k = 1; k <= 8; k++) await page.mouse.move(x + 6 * k, y + 2 * k);
+  const moving = await width();
+  assert.ok(moving < full / 2, `reduced while moving (${moving} of ${full} px)`);
+  await page.waitForTimeout(400);
+  assert.equal(await width(), full, 'full resolution when the pointer holds still');
+  // Back to the start and release: the still frame is the one before the drag, pixel for pixel.
+  await page.mouse.move(x, y, { steps: 4 });
+  await page.mouse.up();
+  await page.click('#undo');
+  assert.equal(await width(), full);
+  assert.equal(await canvasHash(page), hash, 'the still frame after undo is the first one');
+  await ctx.close();
+  await b.close();
+});
+
+test('screenshots at 1400×900, 1024×700 and 390×844, device pixel ratio 1 and 2', async () => {
+  const s3 = await readFile(path.join(goldenDir, 'compare_s3_squad_catmull_bspline_arcblend.json'), 'utf8');
+  for (const dpr of [1, 2]) {
+    const context = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
+    for (const vp of SIZES) {
+      const ctx = await context.newContext({ viewport: vp, deviceScaleFactor: dpr });
+      const page = await ctx.newPage();
+      const errors = [];
+      page.on('pageerror', (e) => errors.push(String(e)));
+      await openPlayground(page, `${origin}/index.html`);
+      await page.screenshot({ path: path.join(outDir, `playground-${vp.width}x${vp.height}-dpr${dpr}.png`) });
+      await openPlayground(page, sceneUrl(s3));
+      const [px, py] = await page.evaluate(() => window.spherekitPage.plotPointOnScreen(1.7) ?? [0, 0]);
+      if (px) await page.mouse.click(px, py);
+      await page.screenshot({ path: path.join(outDir, `playground-s3-${vp.width}x${vp.height}-dpr${dpr}.png`) });
+      assert.deepEqual(errors, [], `no page errors at ${vp.width}x${vp.height} DPR ${dpr}`);
+      await ctx.close();
+    }
+    await context.close();
+  }
+});
+
 test('the playground loads nothing from other origins', () => {
   assert.deepEqual(externalRequests, []);
 });

@@ -1,20 +1,23 @@
-// The play button and the t slider: the animated body (S³) or point (S²) on the overlay.
+// The play button and the t slider, in the curves' own parameter units (the scene's time axis,
+// pg.time_axis()); the slider, the readout, the table and the plot cursor share state.t.
 import { $, state } from './state.js';
-import { drawOverlay } from './view.js';
+import { setTime } from './panels.js';
 
 let lastTick = 0;
 function tick(now) {
   if (!state.playing) return;
   const dt = lastTick ? (now - lastTick) / 1000 : 0;
   lastTick = now;
-  state.u = (state.u + dt / 4) % 1;
-  $('t').value = String(state.u);
-  $('t-out').textContent = state.u.toFixed(3);
-  drawOverlay();
+  const [t0, t1] = state.axis;
+  const span = t1 - t0;
+  // Four seconds for the whole axis.
+  let t = state.t + (dt * span) / 4;
+  if (t > t1) t = t0 + ((t - t0) % (span || 1));
+  setTime(t);
   requestAnimationFrame(tick);
 }
 
-function setPlaying(on) {
+export function setPlaying(on) {
   state.playing = on;
   $('play').textContent = on ? '■ Pause' : '▶ Play';
   lastTick = 0;
@@ -23,9 +26,5 @@ function setPlaying(on) {
 
 export function installAnimation() {
   $('play').addEventListener('click', () => setPlaying(!state.playing));
-  $('t').addEventListener('input', () => {
-    state.u = Number($('t').value);
-    $('t-out').textContent = state.u.toFixed(3);
-    drawOverlay();
-  });
+  $('t').addEventListener('input', () => setTime(Number($('t').value)));
 }

@@ -1,8 +1,16 @@
-// Pointer and keyboard: pick and drag a point or a key's axis tip, turn the view, click to add a
-// point, Delete to remove the selected one. Picking, drags and rotations are Rust's.
-import { $, state, attempt } from './state.js';
-import { redraw } from './view.js';
-import { changed, renderPanels, deleteSelected } from './panels.js';
+// Pointer, wheel and keyboard: pick and drag a point or a key's axis tip, turn the view, click
+// to add a point, click or drag on the plot to move t, wheel or pinch to zoom, hover feedback,
+// Delete, Ctrl+Z / Ctrl+Shift+Z. Picking, drags and rotations are Rust's.
+//
+// The pointer-move handler only records where the pointer is: the edit and the render happen
+// once per animation frame (view.redraw's task), at reduced resolution while the drag lasts
+// (state.quick); the URL, the JSON box and the table follow when the drag ends.
+import { $, state, attempt, commit } from './state.js';
+import { redraw, drawOverlay, plotAt, timeAt } from './view.js';
+import { changed, renderPanels, deleteSelected, setTime, stepHistory } from './panels.js';
+
+/** Durations (ms) of the last pointer-move handler runs (the bench reads them). */
+export const moveTimes = [];
 
 function devicePoint(ev) {
   const r = $('overlay').getBoundingClientRect();
@@ -11,80 +19,230 @@ function devicePoint(ev) {
 }
 
 let drag = null;
+let still = 0;
+const pointers = new Map(); // pointerId → [clientX, clientY], for pinch
+let pinch = null;
+
+/** Ends reduced-resolution drawing soon after the last zoom step or when a drag ends. */
+let settle = 0;
+function quickFor(ms) {
+  state.quick = true;
+  clearTimeout(settle);
+  settle = setTimeout(() => {
+    if (drag || pinch) return;
+    state.quick = false;
+    redraw();
+  }, ms);
+}
+
+function setZoom(z) {
+  state.zoom = Math.min(2.5, Math.max(0.5, z));
+  quickFor(180);
+  redraw();
+}
 
 function onDown(ev) {
+  pointers.set(ev.pointerId, [ev.clientX, ev.clientY]);
+  try {
+    $('overlay').setPointerCapture(ev.pointerId);
+  } catch {
+    // A pointer the browser does not know as active (a synthetic one) cannot be captured.
+  }
+  if (pointers.size === 2) {
+    // A second finger: pinch to zoom (the drag in progress stops where it is).
+    const [a, b] = [...pointers.values()];
+    if (drag?.before !== undefined) commit(drag.before);
+    drag = null;
+    pinch = { d0: Math.hypot(a[0] - b[0], a[1] - b[1]) || 1, zoom0: state.zoom };
+    return;
+  }
   const [x, y] = devicePoint(ev);
-  if (y > state.size) return; // the plot strip
-  $('overlay').setPointerCapture(ev.pointerId);
+  const plot = plotAt(x, y);
+  if (plot) {
+    drag = { kind: 'scrub', plot };
+    setTime(timeAt(plot, x));
+    return;
+  }
+  if (y > state.size) return; // below the sphere, outside the plots: the legend
+  const before = state.pg.scene_json();
   const hit = state.pg.pick(x, y, state.size, 12 * Math.max(1, state.size / 512));
   if (hit) {
     const [c, i] = hit;
     state.selected = [c, i];
     state.activeCurve = c;
-    attempt(() => state.pg.pin_camera());
-    drag = { kind: 'point', c, i, x0: x, y0: y, key0: state.pg.point(c, i), moved: false };
+    attempt(() => state.pg.pin_camera(), { record: false });
+    drag = { kind: 'point', c, i, x0: x, y0: y, key0: state.pg.point(c, i), moved: false, before };
     renderPanels();
   } else {
-    drag = { kind: 'view', x0: x, y0: y, camera0: state.pg.camera(), moved: false };
+    drag = { kind: 'view', x0: x, y0: y, camera0: state.pg.camera(), moved: false, before };
   }
+  $('overlay').classList.add('dragging');
   redraw();
 }
 
 function onMove(ev) {
-  if (!drag) return;
-  const [x, y] = devicePoint(ev);
-  if (!drag.moved && Math.hypot(x - drag.x0, y - drag.y0) < 3) return;
-  drag.moved = true;
-  const pg = state.pg;
-  let ok;
-  if (drag.kind === 'view') {
-    ok = attempt(() => pg.drag_view(new Float64Array(drag.camera0), drag.x0, drag.y0, x, y, state.size));
-  } else if (drag.key0.length === 4) {
-    ok = attempt(() => pg.drag_key(drag.c, drag.i, new Float64Array(drag.key0), drag.x0, drag.y0, x, y, state.size));
+  const start = performance.now();
+  if (pointers.has(ev.pointerId)) pointers.set(ev.pointerId, [ev.clientX, ev.clientY]);
+  if (pinch && pointers.size === 2) {
+    const [a, b] = [...pointers.values()];
+    const z = pinch.zoom0 * (Math.hypot(a[0] - b[0], a[1] - b[1]) / pinch.d0);
+    redraw(() => setZoom(z));
+  } else if (drag) {
+    const [x, y] = devicePoint(ev);
+    if (drag.kind === 'scrub') {
+      drag.x = x;
+      redraw(scrubStep);
+    } else if (drag.moved || Math.hypot(x - drag.x0, y - drag.y0) >= 3) {
+      drag.moved = true;
+      drag.x = x;
+      drag.y = y;
+      state.quick = true;
+      redraw(dragStep);
+      // The pointer held still: the full-resolution frame, until it moves again.
+      clearTimeout(still);
+      still = setTimeout(() => {
+        if (!drag?.moved) return;
+        state.quick = false;
+        redraw();
+      }, 150);
+    }
   } else {
-    ok = attempt(() => pg.move_point_to(drag.c, drag.i, x, y, state.size));
+    hover(ev);
   }
-  if (ok) changed({ panels: false });
+  moveTimes.push(performance.now() - start);
+  if (moveTimes.length > 2000) moveTimes.splice(0, 1000);
+}
+
+function scrubStep() {
+  if (drag?.kind === 'scrub' && drag.x !== undefined) setTime(timeAt(drag.plot, drag.x));
+}
+
+/** The drag's edit, once per frame, from the latest pointer position. */
+function dragStep(d = drag) {
+  if (!d || d.x === undefined || d.done === d.x + d.y * 1e6) return;
+  d.done = d.x + d.y * 1e6;
+  const pg = state.pg;
+  const [x, y] = [d.x, d.y];
+  let ok;
+  if (d.kind === 'view') {
+    ok = attempt(() => pg.drag_view(new Float64Array(d.camera0), d.x0, d.y0, x, y, state.size), { record: false });
+  } else if (d.key0.length === 4) {
+    ok = attempt(() => pg.drag_key(d.c, d.i, new Float64Array(d.key0), d.x0, d.y0, x, y, state.size), { record: false });
+  } else {
+    ok = attempt(() => pg.move_point_to(d.c, d.i, x, y, state.size), { record: false });
+  }
+  if (ok) changed({ panels: false, light: true });
+}
+
+/** Hover: the pointer cursor and a ring over a draggable point, a column cursor over a plot. */
+function hover(ev) {
+  const [x, y] = devicePoint(ev);
+  const overlay = $('overlay');
+  const onPlot = Boolean(plotAt(x, y));
+  const hit = !onPlot && y <= state.size ? state.pg.pick(x, y, state.size, 12 * Math.max(1, state.size / 512)) : null;
+  const key = hit ? [hit[0], hit[1]] : null;
+  overlay.classList.toggle('over-point', Boolean(key));
+  overlay.classList.toggle('over-plot', onPlot);
+  const same = (a, b) => (a === b) || (a && b && a[0] === b[0] && a[1] === b[1]);
+  if (!same(key, state.hover)) {
+    state.hover = key;
+    drawOverlay(); // only the overlay changes
+  }
 }
 
 function onUp(ev) {
+  pointers.delete(ev.pointerId);
+  if (pinch) {
+    if (pointers.size < 2) {
+      pinch = null;
+      quickFor(0);
+    }
+    return;
+  }
+  $('overlay').classList.remove('dragging');
   if (!drag) return;
   const d = drag;
   drag = null;
-  if (d.kind === 'point') {
-    renderPanels();
+  if (d.kind === 'scrub') return;
+  state.quick = false;
+  if (d.moved) {
+    dragStep(d); // the last position, if its frame has not run yet
+    commit(d.before);
+    changed();
     return;
   }
-  if (!d.moved) {
-    // A click on the sphere adds a point to the active curve.
-    const [x, y] = devicePoint(ev);
-    const c = Math.min(state.activeCurve, state.pg.curve_count() - 1);
-    const r = 0.45 * state.size;
-    if (Math.hypot(x - state.size / 2, y - state.size / 2) <= r && state.pg.space() !== 'S1') {
-      const before = JSON.parse(state.pg.curve_json(c)).points.length;
-      attempt(() => state.pg.pin_camera());
-      if (attempt(() => state.pg.add_point_at(c, x, y, state.size))) {
-        state.selected = [c, before];
-        changed();
-      }
-    } else {
-      state.selected = null;
-      renderPanels();
-      redraw();
+  if (d.kind === 'point') {
+    changed(); // selected (the camera pinned), nothing moved
+    return;
+  }
+  // A click (no drag) on the sphere adds a point to the active curve.
+  const [x, y] = devicePoint(ev);
+  const c = Math.min(state.activeCurve, state.pg.curve_count() - 1);
+  const r = 0.45 * state.size;
+  if (Math.hypot(x - state.size / 2, y - state.size / 2) <= r && state.pg.space() !== 'S1') {
+    const before = JSON.parse(state.pg.curve_json(c)).points.length;
+    if (attempt(() => {
+      state.pg.pin_camera();
+      state.pg.add_point_at(c, x, y, state.size);
+    }, { record: false })) {
+      commit(d.before);
+      state.selected = [c, before];
+      changed();
     }
+  } else {
+    state.selected = null;
+    renderPanels();
+    redraw();
   }
 }
 
-/** Listens on the overlay canvas and for Delete / Backspace outside form fields. */
+function onCancel(ev) {
+  pointers.delete(ev.pointerId);
+  pinch = null;
+  if (drag?.before !== undefined) commit(drag.before);
+  drag = null;
+  state.quick = false;
+  $('overlay').classList.remove('dragging');
+  changed();
+}
+
+function onWheel(ev) {
+  ev.preventDefault();
+  setZoom(state.zoom * Math.exp(-ev.deltaY * 0.0015));
+}
+
+const typing = () => ['INPUT', 'TEXTAREA', 'SELECT'].includes(document.activeElement?.tagName);
+
+/** Listens on the overlay canvas, and for the keyboard outside form fields. */
 export function installPointer() {
   const overlay = $('overlay');
   overlay.addEventListener('pointerdown', onDown);
   overlay.addEventListener('pointermove', onMove);
   overlay.addEventListener('pointerup', onUp);
-  overlay.addEventListener('pointercancel', () => { drag = null; });
+  overlay.addEventListener('pointercancel', onCancel);
+  overlay.addEventListener('pointerleave', () => {
+    if (!drag && state.hover) {
+      state.hover = null;
+      drawOverlay();
+    }
+  });
+  overlay.addEventListener('wheel', onWheel, { passive: false });
   window.addEventListener('keydown', (ev) => {
-    if ((ev.key === 'Delete' || ev.key === 'Backspace') && !['INPUT', 'TEXTAREA', 'SELECT'].includes(document.activeElement?.tagName)) {
+    const mod = ev.ctrlKey || ev.metaKey;
+    if (mod && !typing() && (ev.key === 'z' || ev.key === 'Z')) {
+      ev.preventDefault();
+      stepHistory(ev.shiftKey ? 1 : -1);
+    } else if (mod && !typing() && ev.key === 'y') {
+      ev.preventDefault();
+      stepHistory(1);
+    } else if ((ev.key === 'Delete' || ev.key === 'Backspace') && !typing()) {
       deleteSelected();
     }
+  });
+  $('undo').addEventListener('click', () => stepHistory(-1));
+  $('redo').addEventListener('click', () => stepHistory(1));
+  $('reset-view').addEventListener('click', () => {
+    state.zoom = 1;
+    if (attempt(() => state.pg.set_view('camera', 'null'))) changed();
   });
 }

@@ -1,5 +1,5 @@
-// The page's shared state and its two error helpers. Every other module reads and writes
-// `state`; nothing else is shared between them.
+// The page's shared state, the error notice, and undo/redo. Every other module reads and
+// writes `state`; nothing else is shared between them.
 
 export const $ = (id) => document.getElementById(id);
 
@@ -11,32 +11,149 @@ export const fixedSize = query.has('size') ? Number(query.get('size')) : null;
 
 export const state = {
   pg: null,          // sk.Playground
-  size: 0,           // render size in device pixels
+  size: 0,           // render size of a still frame, device pixels (zoom included)
   dpr: 1,
+  zoom: 1,           // the view's magnification (1: the sphere fits the stage)
   selected: null,    // [curve, index]
+  hover: null,       // [curve, index] under the pointer
   activeCurve: 0,    // the curve new points go to
   playing: false,
-  u: 0,              // animation fraction of the domain
+  t: 0,              // the time on the scene's time axis (the curves' own t), one for the whole page
+  axis: [0, 1, 0],   // pg.time_axis(): [t0, t1, normalized]
+  frame: 'space',    // the readout's frame for ω and α on S³
   methods: [],       // the registry, as sk.methods() gives it
   presets: [],
+  undo: [],          // scene JSON texts before each edit
+  redo: [],
 };
 
-export function showError(message) {
-  const el = $('error');
-  el.textContent = message ? `error: ${message}` : '';
-  el.hidden = !message;
+/** The last edit's failure: its message, and where it is shown. */
+let notice = { anchor: null, key: null };
+
+/**
+ * Shows `message` (empty: hides it) where the action was: beside `anchor` (a control; it is
+ * marked as failed) or, without one, over the stage. Inside the viewport either way. `help` is
+ * an optional explanation and `offer` an optional `{ label, run }` button.
+ */
+export function showError(message, { anchor = null, help = '', offer = null } = {}) {
+  const box = $('notice');
+  for (const el of document.querySelectorAll('[aria-invalid="true"]')) el.removeAttribute('aria-invalid');
+  $('error').textContent = message ? `error: ${message}` : '';
+  $('error-help').textContent = help;
+  $('error-help').hidden = !help;
+  const button = $('error-offer');
+  button.hidden = !offer;
+  button.onclick = offer ? () => offer.run() : null;
+  if (offer) button.textContent = offer.label;
+  box.hidden = !message;
+  notice = { anchor: message ? anchor : null, key: message ? anchor?.dataset.key ?? null : null };
+  placeNotice();
 }
 
-/** Runs an edit of the handle; a failure shows its message and leaves the last good state. */
-export function attempt(edit) {
+/** Puts the notice beside its control (found again by its key after the panel was redrawn)
+ * or over the stage, and scrolls it into view. */
+export function placeNotice() {
+  const box = $('notice');
+  if (box.hidden) return;
+  let anchor = notice.anchor;
+  if (anchor && !anchor.isConnected && notice.key) anchor = document.querySelector(`[data-key="${notice.key}"]`);
+  if (anchor?.isConnected) {
+    anchor.setAttribute('aria-invalid', 'true');
+    box.className = 'beside';
+    anchor.after(box);
+  } else {
+    box.className = 'over-stage';
+    $('canvas-wrap').after(box);
+  }
+  box.scrollIntoView({ block: 'nearest' });
+}
+
+/** Takes the notice out of the side panel before a part of it is redrawn (it is put back
+ * beside the redrawn control by placeNotice). */
+export function parkNotice() {
+  const box = $('notice');
+  if (box.parentElement !== $('stage')) $('stage').append(box);
+}
+
+/** The control an event in the side panel came from (for the notice), or null. */
+export function controlOf(el) {
+  return el?.closest?.('#panel [data-key], #panel label, #panel .row') ?? null;
+}
+
+/**
+ * Runs an edit of the handle. A failure shows its message where the action was (`anchor`:
+ * the control, or null for the stage), explains a solver that gave up, and leaves the last good
+ * state; a success clears the message. The edit is undoable unless `record` is false (a live
+ * slider or drag records once at its end with `commit`).
+ */
+export function attempt(edit, { anchor = null, record = true } = {}) {
+  const before = state.pg?.scene_json();
   try {
     edit();
-    showError('');
-    return true;
   } catch (e) {
-    showError(e instanceof Error ? e.message : String(e));
+    const message = e instanceof Error ? e.message : String(e);
+    showError(message, { anchor, ...explain(edit, anchor) });
     return false;
   }
+  if (!$('notice').hidden) showError('');
+  if (record && before !== undefined) commit(before);
+  return true;
+}
+
+/** Records an edit that started from scene text `before` (no entry if nothing changed). */
+export function commit(before) {
+  if (before === state.pg.scene_json()) return;
+  state.undo.push(before);
+  if (state.undo.length > 200) state.undo.shift();
+  state.redo.length = 0;
+  updateHistoryButtons();
+}
+
+export function updateHistoryButtons() {
+  $('undo').disabled = state.undo.length === 0;
+  $('redo').disabled = state.redo.length === 0;
+}
+
+/** What the page does after an edit made outside the panels' own handlers (panels.js sets it). */
+export const hooks = { changed: () => {} };
+
+/** The words for a failed `edit` whose solver gave up (Rust's `failure()`): the Beta spline's
+ * interpolation, with the miss distance, and on offer the same edit with the approximating
+ * spline (the method's `interpolate` switch off). */
+function explain(edit, anchor) {
+  const f = JSON.parse(state.pg?.failure() ?? 'null');
+  if (!f) return {};
+  const curve = f.curve ?? 0;
+  const spec = JSON.parse(state.pg.curve_json(curve));
+  const method = methodOf(spec.method);
+  const deg = (f.residual * 180) / Math.PI;
+  const miss = Number.isFinite(f.residual)
+    ? `the nearest one found misses a point by ${f.residual.toPrecision(2)} rad (${deg.toPrecision(2)}°)`
+    : 'the solver found none';
+  const shape = method?.params.some((p) => p.name === 'beta1') ? 'Beta spline with these β' : `${spec.method} curve with these parameters`;
+  const help = `No ${shape} passes through the points: ${miss} after ${f.iterations} iterations.`;
+  // Methods whose schema has an `interpolate` switch can show their approximating curve.
+  const canApproximate = method?.params.some((p) => p.name === 'interpolate' && p.type === 'bool');
+  return {
+    help,
+    offer: canApproximate ? { label: 'Show the approximating spline', run: () => approximate(curve, edit, anchor) } : null,
+  };
+}
+
+/** `edit` again with curve `curve` approximating instead of interpolating, as one undoable edit. */
+function approximate(curve, edit, anchor) {
+  const before = state.pg.scene_json();
+  try {
+    state.pg.set_param(curve, 'interpolate', 'false');
+    edit();
+  } catch (e) {
+    state.pg.set_scene(before);
+    showError(e instanceof Error ? e.message : String(e), { anchor });
+    return;
+  }
+  showError('');
+  commit(before);
+  hooks.changed();
 }
 
 /** Whether a registry `spaces` string ("S2, S3, S<m>" or "S3") includes the scene's space. */

@@ -1,89 +1,206 @@
-// Sizing, drawing and the overlay (selection rings, the animated body). The image itself is
-// rendered in Rust (Playground.draw); the overlay only marks positions Rust projects.
+// Sizing, drawing and the overlay (the moving body or point at t, the plot cursor, hover and
+// selection rings). The image itself is rendered in Rust (Playground.draw); the overlay only
+// marks positions Rust projects. While a drag or a zoom is under way the frame is rendered at
+// reduced resolution (state.quick) and shown at the same size; the still frame afterwards is
+// the full-resolution one, the same pixels as the golden at ?size=.
 import * as sk from '../pkg/spherekit_wasm.js';
 import { drawBodies } from '../draw.js';
 import { $, state, fixedSize, showError } from './state.js';
 
-/** Whether the scene shows a plot under the sphere (speed, or speed and omega; the renderer's default on S³). */
-export function hasPlot() {
-  const view = JSON.parse(state.pg.scene_json()).view ?? {};
-  return view.plot ? view.plot !== 'none' : state.pg.space() === 'S3';
+/** The view options with the renderer's defaults filled in (Rust's `view_options`). */
+export function viewOptions() {
+  return JSON.parse(state.pg.view_options()) ?? { plot: 'none', legend: false, axes: ['x'], frames: 0 };
 }
 
+/** Whether the scene shows a plot under the sphere (speed, or speed and omega). */
+export function hasPlot() {
+  return viewOptions().plot !== 'none';
+}
+
+/** The frame drawn while dragging: this fraction of the CSS width in pixels, at most QUICK_MAX
+ * wide (measured: BENCHMARKS.md, section 6). */
+const QUICK_SCALE = 0.7;
+const QUICK_MAX = 640;
+
 function fit() {
-  const stage = $('stage');
   state.dpr = fixedSize ? 1 : window.devicePixelRatio || 1;
   if (fixedSize) {
     state.size = fixedSize;
+    state.base = fixedSize;
     return;
   }
-  const w = stage.clientWidth - 16;
-  const h = window.innerHeight - stage.getBoundingClientRect().top - 24;
-  // The frame's height per width: the last frame's if it had the same plot strip (plots and
-  // the legend make it taller than wide), or a guess.
+  const stage = $('stage');
+  const narrow = matchMedia('(max-width: 800px)').matches;
+  const w = stage.clientWidth - 12;
+  const h = narrow
+    ? window.innerHeight - 56
+    : stage.clientHeight - stage.querySelector('.toolbar').offsetHeight - 16;
+  // The frame's height per width: the last still frame's if it had the same plot strip (plots
+  // and the legend make it taller than wide), or a guess.
   const plot = hasPlot();
-  const factor = state.aspect?.plot === plot ? state.aspect.value : plot ? 1.4 : 1;
+  const key = `${plot} ${state.pg.curve_count()}`;
+  const factor = state.aspect?.key === key ? state.aspect.value : plot ? 1.45 : 1.08;
   const css = Math.max(160, Math.min(w, h / factor));
-  state.size = Math.min(4096, Math.floor(css * state.dpr));
+  state.base = Math.floor(css);
+  state.size = Math.min(4096, Math.floor(css * state.dpr * state.zoom));
+  state.aspectKey = key;
+  state.fitFactor = factor;
 }
 
 let pending = false;
-/** Redraws on the next animation frame (drags call this many times per frame). */
-export function redraw() {
+const tasks = [];
+/** Durations (ms) of the last frames' work: queued edits, render and overlay (the bench reads them). */
+export const frameTimes = [];
+/** Redraws on the next animation frame, after running `task` (drags queue their edit here, so
+ * that many pointer moves in one frame make one edit and one render). */
+export function redraw(task = null) {
+  if (task) tasks.push(task);
   if (pending) return;
   pending = true;
   requestAnimationFrame(() => {
-    pending = false;
+    const start = performance.now();
+    // Redraws asked for by the tasks are this frame's (`pending` is still set).
+    for (const t of tasks.splice(0)) t();
     drawNow();
+    pending = false;
+    frameTimes.push(performance.now() - start);
+    if (frameTimes.length > 2000) frameTimes.splice(0, 1000);
+    if (tasks.length) redraw();
   });
 }
 
 export function drawNow() {
   const canvas = $('scene');
   fit();
+  const quick = state.quick && !fixedSize;
+  const drawSize = quick
+    ? Math.min(state.size, Math.max(160, Math.round(Math.min(QUICK_MAX, (QUICK_SCALE * state.size) / state.dpr))))
+    : state.size;
   try {
-    state.pg.draw(canvas, state.size);
+    state.pg.draw(canvas, drawSize);
   } catch (e) {
     showError(e.message); // a drawing failure; a good draw leaves an edit's message alone
   }
-  state.aspect = { plot: hasPlot(), value: canvas.height / canvas.width };
-  const css = (px) => `${px / state.dpr}px`;
-  canvas.style.width = css(canvas.width);
-  canvas.style.height = css(canvas.height);
+  const k = state.size / canvas.width;
+  state.plots = JSON.parse(state.pg.plot_axes()).map((p) => ({
+    left: p.left * k, right: p.right * k, top: p.top * k, bottom: p.bottom * k, t0: p.t0, t1: p.t1,
+  }));
+  const aspect = canvas.height / canvas.width;
+  if (!quick && state.zoom === 1) {
+    const again = state.aspect?.key !== state.aspectKey && !fixedSize;
+    state.aspect = { key: state.aspectKey, value: aspect };
+    if (again && Math.abs(aspect - state.fitFactor) > 0.01) {
+      // The first frame of this shape: fit again with its real height.
+      drawNow();
+      return;
+    }
+  }
+  const frameAspect = state.aspect?.value ?? aspect;
+  // The frame at the current zoom, placed so that the sphere's centre stays at the centre of
+  // the unzoomed sphere square; the wrapper clips it.
+  const cssW = state.size / state.dpr;
+  const offset = state.zoom === 1 ? 0 : (state.base - cssW) / 2;
+  const wrap = $('canvas-wrap');
+  setStyle(wrap, 'width', `${state.base}px`);
+  setStyle(wrap, 'height', `${Math.round(state.base * frameAspect)}px`);
   const overlay = $('overlay');
-  overlay.width = canvas.width;
-  overlay.height = canvas.height;
-  overlay.style.width = canvas.style.width;
-  overlay.style.height = canvas.style.height;
+  const oh = Math.round(state.size * aspect);
+  if (overlay.width !== state.size || overlay.height !== oh) {
+    overlay.width = state.size;
+    overlay.height = oh;
+  }
+  for (const c of [canvas, overlay]) {
+    setStyle(c, 'width', `${cssW}px`);
+    setStyle(c, 'height', `${cssW * aspect}px`);
+    setStyle(c, 'left', `${offset}px`);
+    setStyle(c, 'top', `${offset}px`);
+  }
+  const zoom = `zoom ${Math.round(state.zoom * 100)}%`;
+  if ($('zoom-out').textContent !== zoom) $('zoom-out').textContent = zoom;
   drawOverlay();
 }
 
-/** The selection ring and the animated body or point, over the rendered image. */
-export function drawOverlay() {
-  const ctx = $('overlay').getContext('2d');
-  ctx.clearRect(0, 0, ctx.canvas.width, ctx.canvas.height);
-  const pg = state.pg;
-  const s = state.size;
-  const k = s / 512;
-  if (state.playing || state.u > 0) drawBodies(ctx, pg, state.u, s);
-  for (const p of selectedMarkers()) {
-    ctx.strokeStyle = '#e69f00';
-    ctx.lineWidth = 3 * k;
-    ctx.beginPath();
-    ctx.arc(p[0], p[1], 11 * k, 0, 2 * Math.PI);
-    ctx.stroke();
-  }
+let lastOverlay = '';
+
+/** Sets an inline style only when it changes (an unchanged write still costs a style pass). */
+function setStyle(el, name, value) {
+  if (el.style[name] !== value) el.style[name] = value;
 }
 
-/** Pixel positions of the selected point (S²) or of its key's axis tips (S³). */
-function selectedMarkers() {
-  if (!state.selected) return [];
-  const [c, i] = state.selected;
+/** The moving bodies at t, the plot cursor, the hover and selection rings, over the image. */
+export function drawOverlay() {
+  const overlay = $('overlay');
+  const pg = state.pg;
+  const bodies = state.playing || state.t > state.axis[0];
+  // The same marks as last time (turning the view with nothing on the sphere's overlay moves
+  // only the plot-free image): leave the overlay alone, so the compositor has less to do.
+  const onSphere = bodies || state.selected || state.hover;
+  const key = [state.t, bodies, state.selected, state.hover, overlay.width, overlay.height, pg.builds(), pg.curve_count(),
+    onSphere ? pg.camera().join() : '', JSON.stringify(state.plots)].join('|');
+  if (key === lastOverlay) return;
+  lastOverlay = key;
+  const ctx = overlay.getContext('2d');
+  ctx.clearRect(0, 0, overlay.width, overlay.height);
+  const s = state.size;
+  const k = s / 512;
+  if (bodies) drawBodies(ctx, pg, state.t, s);
+  for (const p of state.plots ?? []) {
+    const x = plotX(p, state.t);
+    ctx.strokeStyle = '#b3261e';
+    ctx.lineWidth = Math.max(1, 1.5 * k);
+    ctx.beginPath();
+    ctx.moveTo(x, p.top);
+    ctx.lineTo(x, p.bottom);
+    ctx.stroke();
+    ctx.fillStyle = '#b3261e';
+    ctx.beginPath();
+    ctx.moveTo(x - 5 * k, p.top - 6 * k);
+    ctx.lineTo(x + 5 * k, p.top - 6 * k);
+    ctx.lineTo(x, p.top);
+    ctx.fill();
+  }
+  if (state.hover && !sameKey(state.hover, state.selected)) {
+    for (const p of markers(state.hover)) ring(ctx, p, '#0072b2', 2.5 * k, 12 * k);
+  }
+  for (const p of markers(state.selected)) ring(ctx, p, '#e69f00', 3 * k, 11 * k);
+}
+
+function ring(ctx, p, color, width, radius) {
+  ctx.strokeStyle = color;
+  ctx.lineWidth = width;
+  ctx.beginPath();
+  ctx.arc(p[0], p[1], radius, 0, 2 * Math.PI);
+  ctx.stroke();
+}
+
+const sameKey = (a, b) => Boolean(a && b && a[0] === b[0] && a[1] === b[1]);
+
+/** The x (device pixels of a still frame) of time `t` in plot `p`. */
+export function plotX(p, t) {
+  const f = p.t1 > p.t0 ? (t - p.t0) / (p.t1 - p.t0) : 0;
+  return p.left + Math.min(1, Math.max(0, f)) * (p.right - p.left);
+}
+
+/** The plot under device pixel (x, y) (with a margin for its tick numbers), or null. */
+export function plotAt(x, y) {
+  const m = 8 * (state.size / 512);
+  return (state.plots ?? []).find((p) => x >= p.left - m && x <= p.right + m && y >= p.top - 2 * m && y <= p.bottom + 3 * m) ?? null;
+}
+
+/** The time at device x in plot `p`. */
+export function timeAt(p, x) {
+  const f = Math.min(1, Math.max(0, (x - p.left) / (p.right - p.left)));
+  return p.t0 + f * (p.t1 - p.t0);
+}
+
+/** Pixel positions of point (S²) or key axis tips (S³) `[c, i]`. */
+function markers(key) {
+  if (!key) return [];
+  const [c, i] = key;
   let p;
   try {
     p = state.pg.point(c, i);
   } catch {
-    state.selected = null;
     return [];
   }
   const s = state.size;

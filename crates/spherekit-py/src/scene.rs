@@ -149,8 +149,7 @@ pub(crate) fn render_png(
     size: i64,
 ) -> PyResult<()> {
     let pixmap = render_pixels(py, scene, size)?;
-    let png = pixmap
-        .encode_png()
+    let png = spherekit_render::png::encode_png(&pixmap)
         .map_err(|e| value_error(format!("cannot encode the PNG: {e}")))?;
     std::fs::write(&path, png).map_err(|e| {
         pyo3::exceptions::PyOSError::new_err(format!("cannot write {}: {e}", path.display()))

@@ -43,6 +43,51 @@ enum Item {
     Marker(Point, Shape, Rgb, f32, bool),
 }
 
+/// The marks of a figure on the sphere before projection, in the order they were added: what
+/// a [`Canvas`] draws for any camera, so that a figure can be laid out once and projected for
+/// each camera of a turning view ([`Sketch::project`] adds them to a canvas in the same order,
+/// so the pixels are those of adding them to the canvas directly).
+#[derive(Default)]
+pub(crate) struct Sketch {
+    marks: Vec<Mark>,
+}
+
+enum Mark {
+    Line(Vec<DVec3>, LineStyle),
+    Marker(DVec3, Shape, Rgb, f32),
+}
+
+impl Sketch {
+    /// Adds a polyline of points on (or near) the sphere (see [`Canvas::polyline`]).
+    pub(crate) fn polyline(&mut self, pts: &[DVec3], style: LineStyle) {
+        self.marks.push(Mark::Line(pts.to_vec(), style));
+    }
+
+    /// Adds a marker at a point of the sphere (see [`Canvas::marker`]).
+    pub(crate) fn marker(&mut self, p: DVec3, shape: Shape, color: Rgb, size: f32) {
+        self.marks.push(Mark::Marker(p, shape, color, size));
+    }
+
+    /// The marks on a canvas of `size` pixels seen along the camera `axes`.
+    pub(crate) fn project(&self, size: u32, axes: [DVec3; 3]) -> Canvas {
+        let mut canvas = Canvas::new(size, axes);
+        for mark in &self.marks {
+            match mark {
+                Mark::Line(pts, style) => canvas.polyline(pts, *style),
+                Mark::Marker(p, shape, color, size) => canvas.marker(*p, *shape, *color, *size),
+            }
+        }
+        canvas
+    }
+}
+
+/// Pixels per pixel-at-512 of a `size`-pixel sphere view (line widths and text scale with it).
+pub(crate) fn scale_of(size: u32) -> f32 {
+    #[expect(clippy::cast_possible_truncation, reason = "pixel scale")]
+    let scale = (f64::from(size) / 512.0) as f32;
+    scale
+}
+
 /// The sphere's frame on the pixmap and the list of things to draw, sorted by hemisphere.
 pub(crate) struct Canvas {
     center: (f64, f64),
@@ -56,9 +101,7 @@ pub(crate) struct Canvas {
 
 impl Canvas {
     pub(crate) fn new(size: u32, axes: [DVec3; 3]) -> Self {
-        let s = f64::from(size);
-        #[expect(clippy::cast_possible_truncation, reason = "pixel scale")]
-        let scale = (s / 512.0) as f32;
+        let scale = scale_of(size);
         let (c, radius) = crate::camera::sphere_frame(size);
         Self {
             center: (c, c),

@@ -31,6 +31,8 @@ mod canvas;
 mod flatten;
 mod legend;
 mod plot;
+#[cfg(feature = "png")]
+pub mod png;
 mod stroke;
 mod surface;
 mod text;
@@ -46,7 +48,7 @@ use spherekit_scene::{Built, BuiltCurve, Plot, PlotTime, Scene, SceneError, Spac
 use tiny_skia::{Color, Pixmap, Rect};
 
 pub use camera::{Camera, turn_towards, yaw_pitch};
-use canvas::{Canvas, LineStyle, Rgb, Shape};
+use canvas::{Canvas, LineStyle, Rgb, Shape, Sketch};
 use stroke::Strokes;
 use surface::{Raster, Surface, Svg};
 
@@ -130,18 +132,38 @@ pub fn render_built(
     curves: &[BuiltCurve],
     size: u32,
 ) -> Result<Pixmap, RenderError> {
-    let figure = Figure::new(scene, curves, size)?;
-    let frames: Vec<Rect> = figure.panels.iter().map(|(r, _)| *r).collect();
-    let mut pixmap =
-        backdrop(size, figure.height, figure.axes, &frames).ok_or(RenderError::Size(size))?;
-    Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
-        let mut raster = Raster {
-            pixmap: &mut pixmap,
-            strokes,
-        };
-        figure.draw(&mut raster);
-    });
-    Ok(pixmap)
+    render_figure(scene, curves, size).map(|(pixmap, _)| pixmap)
+}
+
+/// Where a plot strip's axes are in a frame: the box of the plotted values, in pixels of the
+/// frame, with the time at its left and right edges (so that an interactive caller can put a
+/// cursor on the time axis, or read a time from a pointer).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlotAxes {
+    /// The left edge (pixels), where the time is `time[0]`.
+    pub left: f32,
+    /// The top edge (pixels).
+    pub top: f32,
+    /// The right edge (pixels), where the time is `time[1]`.
+    pub right: f32,
+    /// The bottom edge (pixels).
+    pub bottom: f32,
+    /// The time (the curves' t, or u with `view.plot_time` `"normalized"`) at the left and
+    /// right edges.
+    pub time: [f64; 2],
+}
+
+/// As [`render_built`], and where the frame's plot strips put their axes (top to bottom).
+///
+/// # Errors
+///
+/// As [`render_built`].
+pub fn render_figure(
+    scene: &Scene,
+    curves: &[BuiltCurve],
+    size: u32,
+) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
+    prepare(scene, curves, size)?.render(scene, curves)
 }
 
 /// The same picture as [`render`] as an SVG document: vector strokes, the sphere as a radial
@@ -153,9 +175,10 @@ pub fn render_built(
 /// [`RenderError`] for a bad scene, view or size.
 pub fn render_svg(scene: &Scene, size: u32) -> Result<String, RenderError> {
     let curves = scene.build()?;
-    let figure = Figure::new(scene, &curves, size)?;
+    let prepared = prepare(scene, &curves, size)?;
+    let figure = Figure::new(&prepared, scene, &curves)?;
     let mut svg = Svg::new(size, figure.height);
-    let frames: Vec<Rect> = figure.panels.iter().map(|(r, _)| *r).collect();
+    let frames: Vec<Rect> = prepared.panels.iter().map(|(r, _)| *r).collect();
     draw_backdrop(&mut svg, size, figure.axes, &frames);
     figure.draw(&mut svg);
     Ok(svg.finish())
@@ -171,27 +194,41 @@ pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<Camera, RenderE
     Ok(Camera::of(&scene.view()?, curves))
 }
 
-/// Everything of a frame that depends on the curves, laid out: the sphere's marks, the plot
-/// strips, the legend and the title.
-struct Figure {
+/// A scene's figure laid out at one size, everything of it that does not depend on the
+/// camera: the marks on the sphere before projection (flattened curves, points, polygons,
+/// frames) and the plot strips. [`Prepared::render`] projects it for the scene's camera, so an
+/// interactive caller turning the view lays the figure out once ([`prepare`]) and renders it
+/// for each new camera without flattening the curves or sampling the plots again; the pixels
+/// are those of [`render_figure`].
+pub struct Prepared {
     size: u32,
-    height: u32,
-    axes: [DVec3; 3],
-    scale: f32,
-    canvas: Canvas,
+    sketch: Sketch,
     panels: Vec<(Rect, plot::Panel)>,
     time: [f64; 2],
-    legend: Vec<legend::Entry>,
-    legend_top: f32,
-    title: Option<String>,
+    single: bool,
 }
 
-/// The height of one plot strip for a `size` sphere.
-fn strip_height(size: u32) -> u32 {
-    size * 3 / 10
+impl fmt::Debug for Prepared {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Prepared")
+            .field("size", &self.size)
+            .field("plots", &self.panels.len())
+            .field("time", &self.time)
+            .finish_non_exhaustive()
+    }
 }
 
-impl Figure {
+/// Lays out the figure of `curves` (built from `scene`) at `size` for any camera (see
+/// [`Prepared`]).
+///
+/// # Errors
+///
+/// [`RenderError`] for a bad view or size, or a sphere that cannot be drawn.
+pub fn prepare(scene: &Scene, curves: &[BuiltCurve], size: u32) -> Result<Prepared, RenderError> {
+    Prepared::new(scene, curves, size)
+}
+
+impl Prepared {
     fn new(scene: &Scene, curves: &[BuiltCurve], size: u32) -> Result<Self, RenderError> {
         if !(SIZE_RANGE.0..=SIZE_RANGE.1).contains(&size) {
             return Err(RenderError::Size(size));
@@ -200,10 +237,7 @@ impl Figure {
             return Err(RenderError::Space(scene.space.name()));
         }
         let view = scene.view()?;
-        let camera = Camera::of(&view, curves);
-        let axes = camera.axes();
-        let mut canvas = Canvas::new(size, axes);
-        let scale = canvas.scale;
+        let mut sketch = Sketch::default();
         let single = curves.len() == 1;
         let normalized = view.plot_time == PlotTime::Normalized;
         let omega = view.plot == Plot::Omega;
@@ -214,7 +248,7 @@ impl Figure {
             let polygon = !spec.method.interpolates;
             let sampled = match curve {
                 BuiltCurve::S2(b) => {
-                    draw_points(&mut canvas, b, color, polygon, &view, &|p: &S2Point| {
+                    draw_points(&mut sketch, b, color, polygon, &view, &|p: &S2Point| {
                         p.as_dvec3()
                     });
                     sample(&*b.curve, size, normalized, &|j| {
@@ -224,13 +258,13 @@ impl Figure {
                 }
                 BuiltCurve::Sn(b) => {
                     let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
-                    draw_points(&mut canvas, b, color, polygon, &view, &embed);
+                    draw_points(&mut sketch, b, color, polygon, &view, &embed);
                     sample(&*b.curve, size, normalized, &|j| {
                         [j.velocity.length(), 0.0, 0.0, 0.0]
                     })
                 }
                 BuiltCurve::S3(b) => {
-                    draw_rotations(&mut canvas, b, color, single, &view);
+                    draw_rotations(&mut sketch, b, color, single, &view);
                     // |ω| = 2|q′| (the half-angle factor); ω in the space frame.
                     sample(&*b.curve, size, normalized, &|j| {
                         let w =
@@ -286,8 +320,86 @@ impl Figure {
                 plot_area(size, top, strip).map(|r| (r, p))
             })
             .collect();
+        Ok(Self {
+            size,
+            sketch,
+            panels,
+            time,
+            single,
+        })
+    }
+}
+
+impl Prepared {
+    /// Renders the figure for the camera of `scene`, as [`render_figure`] does. `scene` and
+    /// `curves` must be the ones the figure was prepared from, except for `view.camera`.
+    ///
+    /// # Errors
+    ///
+    /// [`RenderError::Scene`] for a bad view.
+    pub fn render(
+        &self,
+        scene: &Scene,
+        curves: &[BuiltCurve],
+    ) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
+        let figure = Figure::new(self, scene, curves)?;
+        let size = self.size;
+        let frames: Vec<Rect> = self.panels.iter().map(|(r, _)| *r).collect();
+        let mut pixmap =
+            backdrop(size, figure.height, figure.axes, &frames).ok_or(RenderError::Size(size))?;
+        let boxes = Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+            let mut raster = Raster {
+                pixmap: &mut pixmap,
+                strokes,
+            };
+            figure.draw(&mut raster)
+        });
+        let plots = boxes
+            .into_iter()
+            .map(|[left, top, right, bottom]| PlotAxes {
+                left,
+                top,
+                right,
+                bottom,
+                time: self.time,
+            })
+            .collect();
+        Ok((pixmap, plots))
+    }
+}
+
+/// A prepared figure seen by one camera: the projected marks, the legend and the title.
+struct Figure<'a> {
+    prepared: &'a Prepared,
+    height: u32,
+    axes: [DVec3; 3],
+    scale: f32,
+    canvas: Canvas,
+    legend: Vec<legend::Entry>,
+    legend_top: f32,
+    title: Option<String>,
+}
+
+/// The height of one plot strip for a `size` sphere.
+fn strip_height(size: u32) -> u32 {
+    size * 3 / 10
+}
+
+impl<'a> Figure<'a> {
+    fn new(
+        prepared: &'a Prepared,
+        scene: &Scene,
+        curves: &[BuiltCurve],
+    ) -> Result<Self, RenderError> {
+        let view = scene.view()?;
+        let size = prepared.size;
+        let axes = Camera::of(&view, curves).axes();
+        let canvas = prepared.sketch.project(size, axes);
+        let scale = canvas.scale;
+        let panels = &prepared.panels;
+        let strip = strip_height(size);
         let legend = if view.legend {
-            legend_entries(scene, &view, &canvas, single, !panels.is_empty())
+            legend_entries(scene, &view, &canvas, prepared.single, !panels.is_empty())
         } else {
             Vec::new()
         };
@@ -300,35 +412,38 @@ impl Figure {
             size as f32 * 0.985
         };
         Ok(Self {
-            size,
+            prepared,
             height: size + plots + legend_h,
             axes,
             scale,
             canvas,
-            panels,
-            time,
             legend,
             legend_top,
             title: view.title,
         })
     }
 
-    /// Draws the figure over its backdrop.
-    fn draw(&self, surface: &mut dyn Surface) {
+    /// Draws the figure over its backdrop; returns the plots' axes boxes (see [`PlotAxes`]).
+    fn draw(&self, surface: &mut dyn Surface) -> Vec<[f32; 4]> {
         self.canvas.draw(surface);
-        for (area, panel) in &self.panels {
-            plot::draw(surface, *area, self.scale, panel, self.time);
-        }
+        let prepared = self.prepared;
+        let boxes = prepared
+            .panels
+            .iter()
+            .filter_map(|(area, panel)| {
+                plot::draw(surface, *area, self.scale, panel, prepared.time)
+            })
+            .collect();
         legend::draw(
             surface,
             &self.legend,
             self.legend_top,
-            self.size,
+            prepared.size,
             self.scale,
         );
         if let Some(title) = &self.title {
             #[expect(clippy::cast_precision_loss, reason = "pixel sizes")]
-            let s = self.size as f32;
+            let s = prepared.size as f32;
             let mut px = (17.0 * self.scale).max(9.0);
             let w = text::width(title, px);
             if w > 0.96 * s {
@@ -344,6 +459,7 @@ impl Figure {
                 surface::Anchor::Middle,
             );
         }
+        boxes
     }
 }
 
@@ -568,7 +684,7 @@ fn polygon_style(color: Rgb) -> LineStyle {
     }
 }
 
-fn arcs(canvas: &mut Canvas, pts: &[DVec3], style: LineStyle) {
+fn arcs(canvas: &mut Sketch, pts: &[DVec3], style: LineStyle) {
     for w in pts.windows(2) {
         if (w[0] + w[1]).length() > 1e-9 {
             canvas.polyline(&flatten::great_arc(w[0], w[1]), style);
@@ -578,7 +694,7 @@ fn arcs(canvas: &mut Canvas, pts: &[DVec3], style: LineStyle) {
 
 /// A curve on S² (or S¹ on the equator): the curve, its points, derived points and polygons.
 fn draw_points<P: Manifold>(
-    canvas: &mut Canvas,
+    canvas: &mut Sketch,
     b: &Built<P>,
     color: Rgb,
     polygon: bool,
@@ -624,7 +740,7 @@ fn draw_points<P: Manifold>(
 }
 
 /// A curve on S³ as the trajectories of the tips of its rotated body axes.
-fn draw_rotations(canvas: &mut Canvas, b: &Built<UnitQuat>, color: Rgb, single: bool, view: &View) {
+fn draw_rotations(canvas: &mut Sketch, b: &Built<UnitQuat>, color: Rgb, single: bool, view: &View) {
     for &k in &view.axes {
         let axis = [DVec3::X, DVec3::Y, DVec3::Z][k];
         let c = if single { AXIS_COLORS[k] } else { color };

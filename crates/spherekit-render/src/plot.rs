@@ -125,17 +125,19 @@ pub(crate) fn format_number(v: f64, decimals: usize) -> String {
     s.replace('-', "−")
 }
 
-/// Draws `panel` into the strip's `area` (pixels), over the time range `time`.
+/// Draws `panel` into the strip's `area` (pixels), over the time range `time`. Returns the
+/// plot's axes box `[left, top, right, bottom]` (pixels; `left` is `time[0]`, `right`
+/// `time[1]`), or `None` for an empty time range (nothing is drawn).
 pub(crate) fn draw(
     surface: &mut dyn Surface,
     area: Rect,
     scale: f32,
     panel: &Panel,
     time: [f64; 2],
-) {
+) -> Option<[f32; 4]> {
     let [t0, t1] = time;
     if t1.partial_cmp(&t0) != Some(core::cmp::Ordering::Greater) {
-        return;
+        return None;
     }
     let (mut vmin, mut vmax) = (0.0_f64, 0.0_f64);
     for s in &panel.series {
@@ -272,6 +274,7 @@ pub(crate) fn draw(
         }
         surface.paint(s.color, 1.0);
     }
+    Some([x0, y1, x1, y0])
 }
 
 #[cfg(test)]

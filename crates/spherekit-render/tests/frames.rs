@@ -134,3 +134,52 @@ fn view_axes_choose_the_traced_body_axes() {
         "{err}"
     );
 }
+
+#[test]
+fn a_prepared_figure_renders_the_pixels_of_a_fresh_one_for_every_camera() {
+    // Laid out once (at the scene's camera), rendered for other cameras: the same pixels and
+    // plot axes as laying the figure out for each camera.
+    for text in [S2, S3] {
+        let base = scene(text);
+        let curves = base.build().expect("builds");
+        let prepared = spherekit_render::prepare(&base, &curves, 200).expect("lays out");
+        for (yaw, pitch) in [(0.0, 0.0), (35.0, 20.0), (200.0, -70.0), (90.0, 89.0)] {
+            let mut v: serde_json::Value = serde_json::from_str(text).expect("JSON");
+            v["view"]["camera"] = serde_json::json!({ "yaw": yaw, "pitch": pitch });
+            let turned = scene(&v.to_string());
+            let (pixmap, axes) = prepared.render(&turned, &curves).expect("renders");
+            let (fresh, fresh_axes) =
+                spherekit_render::render_figure(&turned, &curves, 200).expect("renders");
+            assert!(
+                pixmap.data() == fresh.data(),
+                "{text} at yaw {yaw}, pitch {pitch}: the prepared figure's pixels differ"
+            );
+            assert_eq!(axes, fresh_axes, "the same plot axes");
+            assert_eq!(axes.len(), 1, "one plot strip");
+            let a = axes[0];
+            assert!(
+                a.left < a.right && a.top < a.bottom && a.top > 200.0,
+                "{a:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn plot_axes_span_the_time_axis() {
+    let s = scene(
+        r#"{"space":"S2","method":"geodesic","knots":[0,2,5],
+        "points":[[1,0,0],[0,1,0],[0,0,1]],"view":{"plot":"omega"}}"#,
+    );
+    let curves = s.build().expect("builds");
+    let (_, axes) = spherekit_render::render_figure(&s, &curves, 300).expect("renders");
+    assert_eq!(axes.len(), 2, "speed and components");
+    for a in &axes {
+        assert_eq!(a.time, [0.0, 5.0], "t from the first to the last knot");
+    }
+    assert!(axes[0].bottom < axes[1].top, "top to bottom");
+    let none = scene(r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}"#);
+    let curves = none.build().expect("builds");
+    let (_, axes) = spherekit_render::render_figure(&none, &curves, 100).expect("renders");
+    assert!(axes.is_empty(), "no plot, no axes");
+}

@@ -117,6 +117,12 @@ impl Param {
         self
     }
 
+    /// Applies on S² only.
+    pub(crate) const fn s2_only(mut self) -> Self {
+        self.spheres = Spheres::S2;
+        self
+    }
+
     /// A solver setting.
     pub(crate) const fn advanced(mut self) -> Self {
         self.advanced = true;

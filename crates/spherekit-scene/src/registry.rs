@@ -29,6 +29,7 @@ pub static METHODS: &[&Method] = &[
     &methods::bspline_kim::METHOD,
     &methods::squad::METHOD,
     &methods::catmull_rom::METHOD,
+    &methods::catmull_rom_nlerp::METHOD,
     &methods::gamma::METHOD,
     &methods::beta::METHOD,
     &methods::arc_blend::METHOD,
@@ -91,6 +92,8 @@ pub enum Spheres {
     All,
     /// S³ only.
     S3,
+    /// S² only.
+    S2,
 }
 
 impl Spheres {
@@ -100,6 +103,7 @@ impl Spheres {
         match self {
             Self::All => "S2, S3, S<m>",
             Self::S3 => "S3",
+            Self::S2 => "S2",
         }
     }
 
@@ -109,6 +113,7 @@ impl Spheres {
         match self {
             Self::All => true,
             Self::S3 => space == Space::S3,
+            Self::S2 => space == Space::S2,
         }
     }
 }

@@ -21,12 +21,17 @@
 use core::fmt;
 
 use serde_json::{Value, json};
-use spherekit::UnitQuat;
 use spherekit::glam::DVec3;
-use spherekit_render::{Camera, PALETTE, camera_of, render_built, turn_towards};
+use spherekit::{
+    Ambient, Jet, SolveError, UnitQuat, angular_velocity_acceleration,
+    angular_velocity_acceleration_body,
+};
+use spherekit_render::{
+    Camera, PALETTE, PlotAxes, Prepared, camera_of, prepare, render_built, turn_towards,
+};
 use spherekit_scene::{
-    BuiltCurve, Document, EditError, SAMPLE_FIELDS, SampleOptions, Scene, SceneError, Space,
-    continuity_json, registry_json,
+    BuiltCurve, Document, EditError, Plot, PlotTime, SAMPLE_FIELDS, SampleOptions, Scene,
+    SceneError, Space, continuity_json, registry_json,
 };
 use tiny_skia::Pixmap;
 use wasm_bindgen::prelude::*;
@@ -282,6 +287,15 @@ fn straight_rgba(pixmap: Pixmap) -> Vec<u8> {
     pixmap.take()
 }
 
+/// What a laid-out figure depends on: the scene text without `view.camera`, and the size.
+fn layout_key(scene: &str, size: u32) -> String {
+    let mut v: Value = serde_json::from_str(scene).unwrap_or(Value::Null);
+    if let Some(view) = v.get_mut("view").and_then(Value::as_object_mut) {
+        view.remove("camera");
+    }
+    format!("{size} {v}")
+}
+
 /// The page's handle on one scene: the edited [`Document`] and the last rendered frame.
 ///
 /// Edits go through [`Document`] (checked exactly like a pasted scene, rebuilding only the
@@ -294,6 +308,52 @@ pub struct Playground {
     /// Width of the last rendered frame (0 before the first render).
     width: u32,
     rgba: Vec<u8>,
+    /// Where the last rendered frame's plots put their axes.
+    plots: Vec<PlotAxes>,
+    /// The last figure laid out, with its key (the scene without its camera, and the size):
+    /// turning the view renders it again without flattening or sampling.
+    prepared: Option<(String, Prepared)>,
+    /// What the last failed edit's solver reported (see [`Playground::failure`]).
+    failure: Option<SolveFailure>,
+}
+
+/// An iterative solver that gave up during an edit: the residual it stopped at (for the Beta
+/// interpolation: the largest distance in radians from the curve to a point) and its
+/// iterations.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct SolveFailure {
+    curve: Option<usize>,
+    residual: f64,
+    iterations: usize,
+}
+
+/// The solver failure behind an edit's error, if there is one: the core's
+/// [`SolveError::NoConvergence`] found through the error's sources, with the curve index of
+/// the scene's `curves[i]` wrapper.
+fn solve_failure(e: &EditError) -> Option<SolveFailure> {
+    let EditError::Scene(scene) = e else {
+        return None;
+    };
+    let curve = match scene {
+        SceneError::InCurve { index, .. } => Some(*index),
+        _ => None,
+    };
+    let mut cause: Option<&(dyn core::error::Error + 'static)> = Some(scene);
+    while let Some(err) = cause {
+        if let Some(SolveError::NoConvergence {
+            iterations,
+            residual,
+        }) = err.downcast_ref::<SolveError>()
+        {
+            return Some(SolveFailure {
+                curve,
+                residual: *residual,
+                iterations: *iterations,
+            });
+        }
+        cause = err.source();
+    }
+    None
 }
 
 #[wasm_bindgen]
@@ -309,6 +369,9 @@ impl Playground {
             doc: Document::from_json(scene).map_err(js)?,
             width: 0,
             rgba: Vec::new(),
+            plots: Vec::new(),
+            prepared: None,
+            failure: None,
         })
     }
 
@@ -318,7 +381,22 @@ impl Playground {
     ///
     /// The CLI's message for a bad scene.
     pub fn set_scene(&mut self, scene: &str) -> Result<(), JsError> {
-        self.doc.set_scene(scene).map_err(js)
+        let r = self.doc.set_scene(scene);
+        self.edited(r)
+    }
+
+    /// What the solver reported when the last edit failed because an iterative solver (the
+    /// Beta spline's interpolation) gave up, as JSON `{ "curve", "residual", "iterations" }`
+    /// (`residual` in radians: how far the best curve found misses a point; `curve` null when
+    /// the scene has one curve), or `null` when the last edit succeeded or failed otherwise.
+    #[must_use]
+    pub fn failure(&self) -> String {
+        self.failure
+            .map_or(
+                Value::Null,
+                |f| json!({ "curve": f.curve, "residual": f.residual, "iterations": f.iterations }),
+            )
+            .to_string()
     }
 
     /// The current scene as compact JSON text.
@@ -387,7 +465,8 @@ impl Playground {
     ///
     /// The CLI's message when the curve rejects the point; a bad index or coordinates.
     pub fn set_point(&mut self, curve: usize, index: usize, coords: &[f64]) -> Result<(), JsError> {
-        self.doc.set_point(curve, index, coords).map_err(js)
+        let r = self.doc.set_point(curve, index, coords);
+        self.edited(r)
     }
 
     /// Inserts a point before `index` (`index` = count appends); knots and per-joint lists
@@ -402,7 +481,8 @@ impl Playground {
         index: usize,
         coords: &[f64],
     ) -> Result<(), JsError> {
-        self.doc.insert_point(curve, index, coords).map_err(js)
+        let r = self.doc.insert_point(curve, index, coords);
+        self.edited(r)
     }
 
     /// Removes point `index` of curve `curve`; knots and per-joint lists follow.
@@ -411,7 +491,8 @@ impl Playground {
     ///
     /// The CLI's message when too few points remain; a bad index.
     pub fn remove_point(&mut self, curve: usize, index: usize) -> Result<(), JsError> {
-        self.doc.remove_point(curve, index).map_err(js)
+        let r = self.doc.remove_point(curve, index);
+        self.edited(r)
     }
 
     /// Sets `params.<name>` of curve `curve` to a JSON value (`null` removes it).
@@ -421,7 +502,8 @@ impl Playground {
     /// The CLI's message for a bad parameter; text that is not JSON.
     pub fn set_param(&mut self, curve: usize, name: &str, value: &str) -> Result<(), JsError> {
         let v = json_arg(value).map_err(js)?;
-        self.doc.set_param(curve, name, v).map_err(js)
+        let r = self.doc.set_param(curve, name, v);
+        self.edited(r)
     }
 
     /// Replaces curve `curve`'s fields other than `points` by those of a JSON object
@@ -435,7 +517,8 @@ impl Playground {
             Value::Object(m) => m,
             _ => return Err(js(EditError::Json("expected an object".into()))),
         };
-        self.doc.set_curve(curve, fields).map_err(js)
+        let r = self.doc.set_curve(curve, fields);
+        self.edited(r)
     }
 
     /// Gives curve `curve` another method, keeping the parameters and knots it can take.
@@ -444,7 +527,8 @@ impl Playground {
     ///
     /// The CLI's message when the method cannot take the curve's points.
     pub fn set_method(&mut self, curve: usize, method: &str) -> Result<(), JsError> {
-        self.doc.set_method(curve, method).map_err(js)
+        let r = self.doc.set_method(curve, method);
+        self.edited(r)
     }
 
     /// Adds a curve with `method` through the same points as curve 0 (a single-curve scene
@@ -454,7 +538,8 @@ impl Playground {
     ///
     /// The CLI's message when the method cannot take these points.
     pub fn add_curve(&mut self, method: &str) -> Result<(), JsError> {
-        self.doc.add_curve(method).map_err(js)
+        let r = self.doc.add_curve(method);
+        self.edited(r)
     }
 
     /// Removes curve `curve` (the last one cannot be removed).
@@ -463,7 +548,8 @@ impl Playground {
     ///
     /// A bad index or the last curve.
     pub fn remove_curve(&mut self, curve: usize) -> Result<(), JsError> {
-        self.doc.remove_curve(curve).map_err(js)
+        let r = self.doc.remove_curve(curve);
+        self.edited(r)
     }
 
     /// Sets a `view` option (`camera`, `plot`, `frames`, `accuracy`, `axes`) to a JSON value
@@ -474,7 +560,27 @@ impl Playground {
     /// The CLI's message for a bad option; text that is not JSON.
     pub fn set_view(&mut self, name: &str, value: &str) -> Result<(), JsError> {
         let v = json_arg(value).map_err(js)?;
-        self.doc.set_view(name, v).map_err(js)
+        let r = self.doc.set_view(name, v);
+        self.edited(r)
+    }
+
+    /// The view options the scene is drawn with, defaults filled in, as JSON: `{ "plot":
+    /// "speed" | "omega" | "none", "legend", "axes": ["x", …], "frames" }` (the panel's
+    /// toggles show these).
+    #[must_use]
+    pub fn view_options(&self) -> String {
+        // The scene's view was checked when it was set.
+        let Ok(view) = self.doc.scene().view() else {
+            return Value::Null.to_string();
+        };
+        let plot = match view.plot {
+            Plot::Speed => "speed",
+            Plot::Omega => "omega",
+            Plot::None => "none",
+        };
+        let axes: Vec<&str> = view.axes.iter().map(|&k| ["x", "y", "z"][k % 3]).collect();
+        json!({ "plot": plot, "legend": view.legend, "axes": axes, "frames": view.frames })
+            .to_string()
     }
 
     /// The camera the scene is drawn with, `[w, x, y, z]` (the default one when the scene has
@@ -620,21 +726,35 @@ impl Playground {
         self.set_point(curve, index, &q.to_wxyz())
     }
 
-    /// Curve `curve` at the fraction `u` ∈ [0, 1] of its domain: an S³ curve gives its
-    /// orientation `[w, x, y, z]` followed by the rotated body axes (9 numbers), another
-    /// sphere the point.
+    /// The scene's time axis `[t₀, t₁, normalized]`: the span of every curve's domain in its
+    /// own parameter t (what the plots' time axis shows), or `[0, 1, 1]` with `view.plot_time`
+    /// `"normalized"` (each curve then runs over u = (t − its t₀)/(its t₁ − its t₀)). The
+    /// `time` arguments of [`Playground::eval`] and [`Playground::readout`] are on this axis.
+    #[must_use]
+    pub fn time_axis(&self) -> Vec<f64> {
+        if self.normalized() {
+            return vec![0.0, 1.0, 1.0];
+        }
+        let [a, b] =
+            self.doc
+                .curves()
+                .iter()
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[a, b], c| {
+                    let [t0, t1] = c.domain();
+                    [a.min(t0), b.max(t1)]
+                });
+        vec![a, b, 0.0]
+    }
+
+    /// Curve `curve` at `time` on the scene's time axis ([`Playground::time_axis`]), clamped to
+    /// its domain: an S³ curve gives its orientation `[w, x, y, z]` followed by the rotated
+    /// body axes (9 numbers), another sphere the point.
     ///
     /// # Errors
     ///
     /// For a curve that does not exist.
-    pub fn eval(&self, curve: usize, u: f64) -> Result<Vec<f64>, JsError> {
-        let c = self
-            .doc
-            .curves()
-            .get(curve)
-            .ok_or(InputError::NoCurve(curve))?;
-        let [t0, t1] = c.domain();
-        let t = t0 + (t1 - t0) * u.clamp(0.0, 1.0);
+    pub fn eval(&self, curve: usize, time: f64) -> Result<Vec<f64>, JsError> {
+        let (c, t) = self.at(curve, time)?;
         Ok(match c {
             BuiltCurve::S2(b) => b.curve.eval(t).as_dvec3().to_array().to_vec(),
             BuiltCurve::Sn(b) => b.curve.eval(t).coords().to_vec(),
@@ -647,6 +767,75 @@ impl Playground {
                 out
             }
         })
+    }
+
+    /// What the readout shows of curve `curve` at `time` on the scene's time axis (clamped to
+    /// its domain), as JSON: `{ "t", "point", "speed" }`, the curve's own parameter `t`, the
+    /// point (`[w, x, y, z]` on S³) and the speed |c′(t)| (on S³ the angular speed |ω|, in
+    /// radians per unit t), and on S³ `"omega"` and `"alpha"`, the angular velocity and
+    /// acceleration in the space frame or, with `frame` `"body"`, the body frame
+    /// ([`spherekit::angular_velocity_acceleration`]). Right-sided at a joint.
+    ///
+    /// # Errors
+    ///
+    /// For a curve that does not exist; a frame other than `"space"` or `"body"`.
+    pub fn readout(
+        &self,
+        curve: usize,
+        time: f64,
+        frame: Option<String>,
+    ) -> Result<String, JsError> {
+        let body = body_frame(frame.as_deref())?;
+        let (c, t) = self.at(curve, time)?;
+        let out = match c {
+            BuiltCurve::S2(b) => {
+                let j = b.curve.jet(t);
+                json!({ "t": t, "point": j.point.as_dvec3().to_array(), "speed": j.velocity.length() })
+            }
+            BuiltCurve::Sn(b) => {
+                let j = b.curve.jet(t);
+                json!({ "t": t, "point": j.point.coords(), "speed": j.velocity.length() })
+            }
+            BuiltCurve::S3(b) => {
+                let Jet {
+                    point,
+                    velocity,
+                    acceleration,
+                    ..
+                } = b.curve.jet(t);
+                let (w, a) = if body {
+                    angular_velocity_acceleration_body(point, velocity, acceleration)
+                } else {
+                    angular_velocity_acceleration(point, velocity, acceleration)
+                };
+                json!({
+                    "t": t,
+                    "point": point.to_wxyz(),
+                    "speed": w.length(),
+                    "omega": w.to_array(),
+                    "alpha": a.to_array(),
+                })
+            }
+        };
+        Ok(out.to_string())
+    }
+
+    /// Where the last rendered frame's plot strips have their axes, top to bottom, as JSON
+    /// `[{ "left", "top", "right", "bottom", "t0", "t1" }, …]` (pixels of that frame; the time
+    /// on the scene's time axis at the left and right edges). Empty without plots.
+    #[must_use]
+    pub fn plot_axes(&self) -> String {
+        let list: Vec<Value> = self
+            .plots
+            .iter()
+            .map(|p| {
+                json!({
+                    "left": p.left, "top": p.top, "right": p.right, "bottom": p.bottom,
+                    "t0": p.time[0], "t1": p.time[1],
+                })
+            })
+            .collect();
+        Value::Array(list).to_string()
     }
 
     /// The scene's samples, as [`sample`].
@@ -681,10 +870,19 @@ impl Playground {
     ///
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
-        let pixmap = render_built(self.doc.scene(), self.doc.curves(), size).map_err(js)?;
+        let (scene, curves) = (self.doc.scene(), self.doc.curves());
+        let key = layout_key(&self.doc.to_json(), size);
+        let prepared = match self.prepared.take() {
+            Some((k, p)) if k == key => p,
+            _ => prepare(scene, curves, size).map_err(js)?,
+        };
+        let rendered = prepared.render(scene, curves);
+        self.prepared = Some((key, prepared));
+        let (pixmap, plots) = rendered.map_err(js)?;
         let h = pixmap.height();
         self.width = pixmap.width();
         self.rgba = straight_rgba(pixmap);
+        self.plots = plots;
         Ok(h)
     }
 
@@ -725,6 +923,37 @@ impl Playground {
 }
 
 impl Playground {
+    /// Keeps what a failed edit's solver reported (or forgets it) and gives the error.
+    fn edited(&mut self, result: Result<(), EditError>) -> Result<(), JsError> {
+        self.failure = result.as_ref().err().and_then(solve_failure);
+        result.map_err(js)
+    }
+
+    fn normalized(&self) -> bool {
+        self.doc
+            .scene()
+            .view()
+            .is_ok_and(|v| v.plot_time == PlotTime::Normalized)
+    }
+
+    /// Curve `curve` and its parameter at `time` on the scene's time axis, clamped to its
+    /// domain (a NaN time is the domain's start).
+    fn at(&self, curve: usize, time: f64) -> Result<(&BuiltCurve, f64), InputError> {
+        let c = self
+            .doc
+            .curves()
+            .get(curve)
+            .ok_or(InputError::NoCurve(curve))?;
+        let [t0, t1] = c.domain();
+        let t = if self.normalized() {
+            t0 + (t1 - t0) * time
+        } else {
+            time
+        };
+        let t = if t.is_nan() { t0 } else { t.clamp(t0, t1) };
+        Ok((c, t))
+    }
+
     fn cam(&self) -> Camera {
         // The scene's view was checked when it was set.
         camera_of(self.doc.scene(), self.doc.curves()).unwrap_or(Camera {

@@ -265,3 +265,151 @@ fn picking_and_dragging_use_the_render_projection() {
     let d: f64 = q.iter().zip(&c).map(|(a, b)| (a - b).abs()).sum();
     assert!(d < 1e-12, "the point is under the pointer");
 }
+
+#[wasm_bindgen_test]
+fn the_time_axis_eval_and_readout_use_the_curves_own_t() {
+    let scene = r#"{"space":"S3","method":"squad","knots":[0,1,3,4],
+        "points":[[1,0,0,0],[0.9239,0,0,0.3827],[0.7071,0.5,0.5,0],[0.5,-0.5,0.5,0.5]]}"#;
+    let pg = Playground::new(scene).unwrap();
+    assert_eq!(
+        pg.time_axis(),
+        vec![0.0, 4.0, 0.0],
+        "t from 0 to the last knot"
+    );
+    // At a knot the curve passes through its key.
+    let q = pg.eval(0, 3.0).unwrap();
+    let key = [0.7071, 0.5, 0.5, 0.0];
+    let dot: f64 = q[..4].iter().zip(key).map(|(a, b)| a * b).sum();
+    assert!(
+        (dot.abs() - 1.0).abs() < 1e-3,
+        "eval at t = 3 is key 2: {q:?}"
+    );
+    // Outside the domain: clamped, never NaN.
+    assert_eq!(
+        pg.eval(0, 9.0).unwrap(),
+        pg.eval(0, 4.0).unwrap(),
+        "clamped"
+    );
+    assert!(
+        pg.eval(0, f64::NAN).unwrap().iter().all(|x| x.is_finite()),
+        "NaN is t0"
+    );
+    let r: serde_json::Value = serde_json::from_str(&pg.readout(0, 2.0, None).unwrap()).unwrap();
+    assert_eq!(r["t"], 2.0);
+    let omega: Vec<f64> = serde_json::from_value(r["omega"].clone()).unwrap();
+    let speed = r["speed"].as_f64().unwrap();
+    assert!(
+        (omega.iter().map(|w| w * w).sum::<f64>().sqrt() - speed).abs() < 1e-12,
+        "|ω|"
+    );
+    // The body frame: the same angular speed, ω turned by the orientation's inverse.
+    let b: serde_json::Value =
+        serde_json::from_str(&pg.readout(0, 2.0, Some("body".into())).unwrap()).unwrap();
+    assert!(
+        (b["speed"].as_f64().unwrap() - speed).abs() < 1e-12,
+        "same |ω|"
+    );
+    assert_ne!(b["omega"], r["omega"], "another frame");
+    // Against a central difference: |ω| is twice the rate of the quaternion's angle.
+    let h = 1e-6;
+    let q0 = pg.eval(0, 2.0 - h).unwrap();
+    let q1 = pg.eval(0, 2.0 + h).unwrap();
+    let angle = 2.0
+        * (q0[..4]
+            .iter()
+            .zip(&q1[..4])
+            .map(|(a, b)| a * b)
+            .sum::<f64>())
+        .abs()
+        .min(1.0)
+        .acos();
+    assert!(
+        (angle / (2.0 * h) - speed).abs() < 1e-4,
+        "|ω| is the rate of turning"
+    );
+    assert!(
+        pg.readout(0, 1.0, Some("world".into())).is_err(),
+        "bad frame"
+    );
+    assert!(pg.readout(3, 1.0, None).is_err(), "no curve 3");
+    // The normalized plot time: u from 0 to 1 over each curve.
+    let mut pg = pg;
+    pg.set_view("plot_time", r#""normalized""#).unwrap();
+    assert_eq!(pg.time_axis(), vec![0.0, 1.0, 1.0]);
+    let r: serde_json::Value = serde_json::from_str(&pg.readout(0, 0.75, None).unwrap()).unwrap();
+    assert_eq!(r["t"], 3.0, "u = 0.75 is t = 3");
+}
+
+#[wasm_bindgen_test]
+fn the_plot_axes_of_the_last_frame() {
+    let mut pg = Playground::new(S3).unwrap();
+    assert_eq!(pg.plot_axes(), "[]", "nothing rendered yet");
+    pg.render(256).unwrap();
+    let axes: serde_json::Value = serde_json::from_str(&pg.plot_axes()).unwrap();
+    let a = &axes[0];
+    let (left, right, top, bottom) = (
+        a["left"].as_f64().unwrap(),
+        a["right"].as_f64().unwrap(),
+        a["top"].as_f64().unwrap(),
+        a["bottom"].as_f64().unwrap(),
+    );
+    assert!(0.0 < left && left < right && right < 256.0, "{a}");
+    assert!(256.0 < top && top < bottom, "under the sphere: {a}");
+    assert_eq!((a["t0"].as_f64(), a["t1"].as_f64()), (Some(0.0), Some(3.0)));
+    let mut s2 = Playground::new(S2).unwrap();
+    s2.render(64).unwrap();
+    assert_eq!(s2.plot_axes(), "[]", "no plot");
+}
+
+#[wasm_bindgen_test]
+fn a_failed_beta_interpolation_reports_the_miss_distance() {
+    let scene = r#"{"space":"S2","method":"beta","points":[[0.6296,-0.1171,-0.768],[-0.8142,-0.2856,0.5055],[-0.4037,0.6855,0.6059],[-0.7206,-0.5462,-0.427]],"params":{"beta1":1,"beta2":0}}"#;
+    let mut pg = Playground::new(scene).unwrap();
+    assert_eq!(pg.failure(), "null");
+    let e = pg.set_param(0, "beta1", "1.5").unwrap_err();
+    assert!(message(e).contains("did not converge"));
+    let f: serde_json::Value = serde_json::from_str(&pg.failure()).unwrap();
+    let miss = f["residual"].as_f64().unwrap();
+    assert!(miss > 0.01 && miss < 3.2, "a miss in radians: {f}");
+    assert!(f["iterations"].as_u64().unwrap() > 0);
+    assert_eq!(f["curve"], serde_json::Value::Null, "one curve");
+    // Another kind of failure, or a success, forgets it.
+    assert!(pg.set_point(0, 1, &[0.0, 0.0, 0.0]).is_err());
+    assert_eq!(pg.failure(), "null");
+    pg.set_param(0, "interpolate", "false").unwrap();
+    pg.set_param(0, "beta1", "1.5").unwrap();
+    assert_eq!(
+        pg.failure(),
+        "null",
+        "the approximating spline takes any β₁"
+    );
+}
+
+#[wasm_bindgen_test]
+fn view_options_fill_in_the_renderers_defaults() {
+    let v = |scene: &str| -> serde_json::Value {
+        serde_json::from_str(&Playground::new(scene).unwrap().view_options()).unwrap()
+    };
+    let s2 = v(S2);
+    assert_eq!(s2["plot"], "none", "one S2 curve: no plot");
+    assert_eq!(s2["legend"], false, "nor a legend");
+    let s3 = v(S3);
+    assert_eq!(
+        (s3["plot"].as_str(), s3["legend"].as_bool()),
+        (Some("speed"), Some(true)),
+        "S3: both"
+    );
+    assert_eq!(
+        s3["axes"],
+        serde_json::json!(["x", "y", "z"]),
+        "one S3 curve traces three axes"
+    );
+    let chosen = v(
+        r#"{"space":"S3","method":"squad","points":[[1,0,0,0],[0,1,0,0]],
+        "view":{"plot":"omega","legend":false,"axes":["z"],"frames":4}}"#,
+    );
+    assert_eq!(
+        chosen,
+        serde_json::json!({"plot":"omega","legend":false,"axes":["z"],"frames":4})
+    );
+}

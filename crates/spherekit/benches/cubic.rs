@@ -49,6 +49,10 @@ fn evaluation(c: &mut Criterion) {
     group.bench_function("jet_many 20 keys", |b| {
         b.iter(|| curve.jet_many(black_box(&ts), &mut jets));
     });
+    let mut rates = vec![curve.point_velocity(0.0); ts.len()];
+    group.bench_function("point_velocity_many 20 keys", |b| {
+        b.iter(|| curve.point_velocity_many(black_box(&ts), &mut rates));
+    });
     group.bench_function("eval_many 20 keys", |b| {
         b.iter(|| curve.eval_many(black_box(&ts), &mut points));
     });

@@ -3,6 +3,8 @@
 
 //! Pobegailo's corner smoothing of a great-circle polyline.
 
+use core::f64::consts::TAU;
+
 use glam::{DQuat, DVec4};
 
 use crate::ambient::Ambient;
@@ -10,8 +12,10 @@ use crate::arc_blend::{check_loop_neighbours, check_neighbours, check_order};
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::flow::{Flow, LeftMultiplication, PlaneRotation, Segment, Weights};
-use crate::knots::Knots;
+use crate::knots::{Knots, MAX_KNOT_SPACING, MIN_KNOT_SPACING};
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
+use crate::math;
+use crate::s2::S2Point;
 use crate::s3::UnitQuat;
 use crate::smoothing::SmoothingPolynomials;
 
@@ -25,8 +29,122 @@ struct CornerCore<V, F> {
     closed: bool,
     knots: Knots,
     poly: SmoothingPolynomials,
-    fraction: f64,
+    /// Per corner `[incoming, outgoing]` fractions of the edges meeting there.
+    cuts: Vec<[f64; 2]>,
     segments: Vec<Segment<V, F>>,
+}
+
+/// Where the corner blends of a [`CornerBlend`] or [`CornerBlendS3`] start and end: the cut-back
+/// of each corner along the edges meeting there, as fractions of those edges measured from the
+/// corner (Pobegailo (2019), §8.5: the cut points `Q₁`, `Q₂` are chosen "from kinematic
+/// requirements").
+#[derive(Clone, Debug, PartialEq)]
+pub enum CornerCuts {
+    /// One fraction `f ∈ (0, 0.5]` of every edge at every corner (the cuts of two corners on an
+    /// edge then never overlap).
+    Uniform(f64),
+    /// One fraction per corner (interior point `P₁ … P_{M−1}`), used on both of its edges.
+    PerCorner(Vec<f64>),
+    /// `[incoming, outgoing]` per corner: the part of the edge before the corner and of the
+    /// edge after it that the corner blend replaces.
+    Pairs(Vec<[f64; 2]>),
+}
+
+/// When a corner blend starts and how fast it runs: the parameter `t₀` at the first point and
+/// the angular speed `ω₀` on the first edge (radians of the edge's rotation per unit `t`).
+///
+/// These are the book's free timing data, the knots `t₁ < t₂` of the lead-in arc (Pobegailo
+/// (2019), §8.8, Algorithm 8.2: `ω₀ = φ₁/(t₂ − t₁)`). Every later knot is forced by Cⁿ
+/// continuity: corner `j` lasts `α_j/ω` and leaves at `ω·β_j/α_j` (`α_j`, `β_j` its cut angles),
+/// so per-corner durations are not free data; they follow from the cuts (equal cut angles keep
+/// the speed).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CornerTiming {
+    /// The parameter at the first point.
+    pub start: f64,
+    /// The angular speed on the first edge, `> 0`.
+    pub speed: f64,
+}
+
+impl Default for CornerTiming {
+    /// Start at 0 with unit angular speed.
+    fn default() -> Self {
+        Self {
+            start: 0.0,
+            speed: 1.0,
+        }
+    }
+}
+
+fn cut_error(reason: String) -> SplineError {
+    SplineError::InvalidParameter {
+        name: "fraction",
+        reason,
+    }
+}
+
+impl CornerCuts {
+    /// The `[incoming, outgoing]` fractions of the `corners` corners, checked: each in `(0, 1)`,
+    /// and the cuts of two consecutive corners on the edge between them at most the whole edge.
+    ///
+    /// A closed polygon has a corner at every vertex: entry `j` is the corner at point
+    /// `(j + 1) mod m`, the last one at point 0, and the last and the first share the edge from
+    /// point 0 to point 1.
+    fn resolve(&self, corners: usize, closed: bool) -> Result<Vec<[f64; 2]>, SplineError> {
+        let list: Vec<[f64; 2]> = match self {
+            Self::Uniform(f) => {
+                check_fraction(*f)?;
+                return Ok(vec![[*f, *f]; corners]);
+            }
+            Self::PerCorner(v) => v.iter().map(|&f| [f, f]).collect(),
+            Self::Pairs(v) => v.clone(),
+        };
+        if list.len() != corners {
+            let which = if closed {
+                format!("the points 1 to {} and 0", corners - 1)
+            } else {
+                format!("the points 1 to {corners}")
+            };
+            return Err(cut_error(format!(
+                "expected {corners} entries (one per corner, {which}), got {}",
+                list.len()
+            )));
+        }
+        for (j, pair) in list.iter().enumerate() {
+            for (side, f) in ["incoming", "outgoing"].iter().zip(pair) {
+                if !(*f > 0.0 && *f < 1.0) {
+                    return Err(cut_error(format!(
+                        "entry {j} (the corner at point {}): the {side} cut must be in (0, 1), got {f}",
+                        (j + 1) % (corners + usize::from(!closed))
+                    )));
+                }
+            }
+        }
+        for (j, w) in list.windows(2).enumerate() {
+            if w[0][1] + w[1][0] > 1.0 {
+                return Err(cut_error(format!(
+                    "entries {j} and {} overlap on the edge from point {} to point {}: the outgoing cut {} and the incoming cut {} add up to more than the edge",
+                    j + 1,
+                    j + 1,
+                    j + 2,
+                    w[0][1],
+                    w[1][0]
+                )));
+            }
+        }
+        if closed {
+            let (last, first) = (list[corners - 1], list[0]);
+            if last[1] + first[0] > 1.0 {
+                return Err(cut_error(format!(
+                    "entries {} and 0 overlap on the edge from point 0 to point 1: the outgoing cut {} and the incoming cut {} add up to more than the edge",
+                    corners - 1,
+                    last[1],
+                    first[0]
+                )));
+            }
+        }
+        Ok(list)
+    }
 }
 
 fn check_fraction(fraction: f64) -> Result<(), SplineError> {
@@ -40,8 +158,56 @@ fn check_fraction(fraction: f64) -> Result<(), SplineError> {
     }
 }
 
-/// The vertices `vs` as ambient vectors, for a closed polygon with the first repeated at the
-/// end, after the checks of an open or closed polyline.
+/// Why the timing of a corner blend has no knots in `f64`: the first piece whose duration is
+/// outside the knot spacing range or lost to rounding next to its start.
+fn timing_error(t: &[f64], speeds: &[f64]) -> SplineError {
+    let i = (1..t.len())
+        .find(|&i| {
+            let w = t[i] - t[i - 1];
+            !(w.is_finite() && (MIN_KNOT_SPACING..=MAX_KNOT_SPACING).contains(&w))
+        })
+        .unwrap_or(1);
+    let reason = format!(
+        "piece {} of the curve (from t = {:e}) cannot be timed in f64: its angular speed {:e} makes it last {:e}; the speed is multiplied by β/α (the outgoing over the incoming cut angle) at each corner, so make the two cuts of each corner closer in angle (or the speed closer to 1)",
+        i - 1,
+        t[i - 1],
+        speeds.get(i - 1).copied().unwrap_or(f64::NAN),
+        t[i] - t[i - 1],
+    );
+    SplineError::InvalidParameter {
+        name: if i == 1 { "speed" } else { "fraction" },
+        reason,
+    }
+}
+
+/// The minor great-circle arcs `P_j → P_{j+1}` as simple rotations in their planes, with their
+/// angles.
+fn great_circle_edges<V: Ambient>(
+    vs: &[V],
+    closed: bool,
+) -> Result<Vec<(PlaneRotation<V>, f64)>, SplineError> {
+    let count = vs.len() - 1;
+    vs.windows(2)
+        .enumerate()
+        .map(|(index, w)| {
+            let (theta, e) = geodesic_frame(&w[0], &w[1])
+                .ok_or_else(|| edge_error(index, count, closed, true))?;
+            if theta <= 0.0 {
+                return Err(edge_error(index, count, closed, false));
+            }
+            Ok((
+                PlaneRotation {
+                    a: w[0].clone(),
+                    b: e,
+                },
+                theta,
+            ))
+        })
+        .collect()
+}
+
+/// The vertices as ambient vectors, for a closed polygon with the first repeated at the end,
+/// after the checks of an open or closed polyline.
 fn polyline<P: Manifold>(points: &[P], closed: bool) -> Result<Vec<P::Vector>, SplineError> {
     if closed {
         check_loop_neighbours(points, 3)?;
@@ -55,7 +221,7 @@ fn polyline<P: Manifold>(points: &[P], closed: bool) -> Result<Vec<P::Vector>, S
     Ok(vs)
 }
 
-/// The errors of edge `index` of `edges` edges: the closing edge of a loop has its own.
+/// The error of edge `index` of `edges` edges: the closing edge of a loop has its own.
 fn edge_error(index: usize, edges: usize, closed: bool, antipodal: bool) -> SplineError {
     match (closed && index + 1 == edges, antipodal) {
         (true, true) => SplineError::AntipodalClosing,
@@ -65,45 +231,66 @@ fn edge_error(index: usize, edges: usize, closed: bool, antipodal: bool) -> Spli
     }
 }
 
+/// The largest relative mismatch `|∏ β_j/α_j − 1|` of the speed factors around a closed loop
+/// (`docs/derivations.md#closed-loops`).
+pub(crate) const LOOP_SPEED_TOLERANCE: f64 = 1e-10;
+
 impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
     /// `points` are the polyline's vertices `P_0 … P_M` (a closed polygon's with `P_M = P_0`),
     /// `edges[j]` the flow and angle of edge `P_j → P_{j+1}`.
     ///
     /// Open: the straight part of edge 0 from `P_0`, corner 1, …, the straight part of the last
     /// edge to `P_M`. Closed: a corner at every vertex, the curve starting where the corner at
-    /// `P_0` ends on edge 0 (the cut `Q_0⁺`) and returning there after the corner at `P_0`; the
-    /// speed factor `ω` is multiplied by `β_j/α_j = Θ_j/Θ_{j−1}` at each corner, a product that
-    /// telescopes to 1 around the loop, so the seam is traversed at the speed it starts with.
+    /// `P_0` ends on edge 0 and returning there after the corner at `P_0`. The speed is
+    /// multiplied by `β_j/α_j` at each corner; around a loop the factors must multiply to 1
+    /// (they do for equal incoming and outgoing fractions, `Θ_j/Θ_{j−1}` telescoping), or the
+    /// seam would change speed.
     fn build(
         points: &[V],
         edges: Vec<(F, f64)>,
         order: usize,
-        fraction: f64,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let poly = check_order(order)?;
-        check_fraction(fraction)?;
         let m = edges.len();
+        let cuts = cuts.resolve(if closed { m } else { m - 1 }, closed)?;
+        if !timing.start.is_finite() {
+            return Err(SplineError::InvalidParameter {
+                name: "start",
+                reason: format!("must be a finite number, got {}", timing.start),
+            });
+        }
+        if !(timing.speed.is_finite() && timing.speed > 0.0) {
+            return Err(SplineError::InvalidParameter {
+                name: "speed",
+                reason: format!("must be a positive number, got {}", timing.speed),
+            });
+        }
         let mut segments = Vec::with_capacity(2 * m);
-        let mut t = vec![0.0];
-        let mut omega = 1.0;
-        let mut push = |segment: Segment<V, F>, t: &mut Vec<f64>| {
+        let mut t = vec![timing.start];
+        let mut omega = timing.speed;
+        // The angular speed of each piece at its start, for the timing error.
+        let mut speeds = Vec::with_capacity(2 * m);
+        let mut push = |segment: Segment<V, F>, t: &mut Vec<f64>, omega: f64| {
             let last = t[t.len() - 1];
             t.push(last + segment.width);
             segments.push(segment);
+            speeds.push(omega);
         };
         for (j, (flow, theta)) in edges.iter().enumerate() {
             // Straight part of edge j: from Q_j⁺ (or P_0) to Q_{j+1}⁻ (or P_M).
-            let (cut_start, straight) = if closed {
-                (fraction * theta, (1.0 - 2.0 * fraction) * theta)
-            } else if j == 0 {
-                (0.0, (1.0 - fraction) * theta)
-            } else if j + 1 == m {
-                (fraction * theta, (1.0 - fraction) * theta)
-            } else {
-                (fraction * theta, (1.0 - 2.0 * fraction) * theta)
+            let out_cut = match (closed, j) {
+                (true, _) => cuts[(j + m - 1) % m][1],
+                (false, 0) => 0.0,
+                (false, _) => cuts[j - 1][1],
             };
-            if straight > 0.0 {
+            let in_cut = if closed || j + 1 < m { cuts[j][0] } else { 0.0 };
+            let cut_start = out_cut * theta;
+            let straight = (1.0 - out_cut - in_cut) * theta;
+            // Cuts that add up to the whole edge (to rounding) leave no straight part.
+            if straight > 4.0 * f64::EPSILON * theta {
                 push(
                     Segment {
                         base: flow.apply(cut_start, &points[j]),
@@ -114,13 +301,14 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
                         width: straight / omega,
                     },
                     &mut t,
+                    omega,
                 );
             }
             if closed || j + 1 < m {
                 // Corner at P_{j+1}: α = incoming cut on edge j, β = outgoing cut on edge j+1.
                 let (next, next_theta) = &edges[(j + 1) % m];
-                let alpha = fraction * theta;
-                let beta = fraction * next_theta;
+                let alpha = cuts[j][0] * theta;
+                let beta = cuts[j][1] * next_theta;
                 push(
                     Segment {
                         base: points[j + 1].clone(),
@@ -131,11 +319,22 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
                         width: alpha / omega,
                     },
                     &mut t,
+                    omega,
                 );
                 omega *= beta / alpha;
             }
         }
-        let knots = Knots::try_new(t)?;
+        let returns = (omega / timing.speed - 1.0).abs() <= LOOP_SPEED_TOLERANCE;
+        if closed && !returns {
+            return Err(cut_error(format!(
+                "closes the loop at {:e} times the starting speed: the speed is multiplied by β/α (the outgoing over the incoming cut angle) at each corner, and around a loop these factors must multiply to 1 (equal incoming and outgoing fractions do)",
+                omega / timing.speed
+            )));
+        }
+        let knots = match Knots::try_new(t.clone()) {
+            Ok(k) => k,
+            Err(_) => return Err(timing_error(&t, &speeds)),
+        };
         // Use the exact knot widths so that u = (t − t_i)/width is consistent with `locate`.
         for (i, s) in segments.iter_mut().enumerate() {
             s.width = knots.width(i);
@@ -144,7 +343,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
             closed,
             knots,
             poly,
-            fraction,
+            cuts,
             segments,
         })
     }
@@ -188,7 +387,11 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// corners (the book treats one; `docs/derivations.md#pobegailo-corners`). Edge `j` is the minor
 /// great-circle arc `P_j → P_{j+1}` with angle `Θ_j` and rotation group `R_j` (`R(ê_j, ·)` on S²).
 /// Each interior vertex `P_j` gets a corner blend that starts
-/// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`):
+/// `α_j = f·Θ_{j−1}` before it and ends `β_j = f·Θ_j` after it (`f = fraction`; with
+/// [`try_with`](Self::try_with) the two fractions of each corner are chosen freely,
+/// [`CornerCuts`], and so are the start and the first speed, [`CornerTiming`]; on S²,
+/// [`try_with_arcs`](Self::try_with_arcs) takes small-circle edges;
+/// `docs/derivations.md#pobegailo-general-corners`):
 ///
 /// ```text
 /// corner j:  r(u) = R_j(w₁,ₙ(u)·β_j) · R_{j−1}(−w₁,ₙ(1 − u)·α_j) · P_j        (8.19)
@@ -196,7 +399,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
 /// durations: an arc of angle γ lasts γ/ω; corner j lasts α_j/ω and sets ω ← ω·β_j/α_j; ω₀ = 1
 /// ```
 ///
-/// The curve starts at `P₀` at unit angular speed, follows the polyline's arcs **exactly**
+/// The curve starts at `P₀` at unit angular speed (by default), follows the polyline's arcs **exactly**
 /// outside the corner blends, and is **Cⁿ** everywhere (generically not Cⁿ⁺¹ at the junctions).
 /// With `f = 0.5` consecutive corner blends meet directly. The corner blend does not in general
 /// pass through `P_j`; for a straight vertex (continuing on the same great circle) it does.
@@ -242,14 +445,56 @@ impl<P: Manifold> CornerBlend<P> {
     /// - [`SplineError::Coincident`] / [`SplineError::Antipodal`] for coincident or antipodal
     ///   consecutive points (no unique great-circle edge).
     pub fn try_new(points: Vec<P>, order: usize, fraction: f64) -> Result<Self, SplineError> {
-        Self::build(points, order, fraction, false)
+        Self::try_with(
+            points,
+            order,
+            &CornerCuts::Uniform(fraction),
+            CornerTiming::default(),
+        )
+    }
+
+    /// Smooths the corners with the given cut-backs per corner and the given timing (start
+    /// parameter and angular speed on the first edge).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new); (`fraction`) for a list of cuts whose length is not the
+    /// number of corners (`points − 2`), a cut outside `(0, 1)`, or two cuts that overlap on an
+    /// edge; (`start`) for a non-finite start and (`speed`) for a speed that is not positive;
+    /// the knot errors of [`Knots::try_new`] when the timing gives pieces too short or too long
+    /// for `f64`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{CornerBlend, CornerCuts, CornerTiming, Curve, S2Point, Side};
+    ///
+    /// let pts = vec![S2Point::X, S2Point::Y, S2Point::Z];
+    /// // Cut back 40 % of the first edge and 10 % of the second; start at t = 2, speed 4.
+    /// let timing = CornerTiming { start: 2.0, speed: 4.0 };
+    /// let c = CornerBlend::try_with(pts, 3, &CornerCuts::Pairs(vec![[0.4, 0.1]]), timing).unwrap();
+    /// let k = c.knots();
+    /// let quarter = core::f64::consts::FRAC_PI_2;
+    /// assert_eq!(k[0], 2.0);
+    /// assert!((k[1] - (2.0 + 0.6 * quarter / 4.0)).abs() < 1e-15);
+    /// // After the corner the speed is 4·β/α = 4·0.1/0.4 = 1.
+    /// assert!((c.jet_at(k[2], Side::Right).velocity.length() - 1.0).abs() < 1e-14);
+    /// ```
+    pub fn try_with(
+        points: Vec<P>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+    ) -> Result<Self, SplineError> {
+        Self::build(points, order, cuts, timing, false)
     }
 
     /// Smooths every corner of the closed polygon `P₀ → P₁ → … → P_{m−1} → P₀` (m ≥ 3), the
-    /// one at `P₀` included. The loop starts where the corner at `P₀` ends on the first edge
-    /// and returns there: it is Cⁿ at the seam as everywhere else (the speed factors telescope
-    /// around the loop, `∏ Θ_j/Θ_{j−1} = 1`), and it follows the polygon's edges exactly
-    /// outside the corner blends. It does not pass through the vertices.
+    /// one at `P₀` included, with the fraction `fraction` of every edge at every corner. The
+    /// loop starts where the corner at `P₀` ends on the first edge and returns there: it is Cⁿ
+    /// at the seam as everywhere else (the speed factors `Θ_j/Θ_{j−1}` telescope around the
+    /// loop), follows the polygon's edges exactly outside the corner blends, and does not pass
+    /// through the vertices.
     ///
     /// # Errors
     ///
@@ -274,36 +519,44 @@ impl<P: Manifold> CornerBlend<P> {
         order: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, fraction, true)
+        Self::try_with_closed(
+            points,
+            order,
+            &CornerCuts::Uniform(fraction),
+            CornerTiming::default(),
+        )
+    }
+
+    /// The closed polygon of [`try_new_closed`](Self::try_new_closed) with cuts and timing as
+    /// [`try_with`](Self::try_with): one cut entry per vertex, entry `j` for the corner at point
+    /// `(j + 1) mod m` (the last at point 0); `timing` gives the parameter and the speed where
+    /// the loop starts (after the corner at point 0).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new_closed`](Self::try_new_closed) and [`try_with`](Self::try_with), and
+    /// [`SplineError::InvalidParameter`] (`fraction`) when the speed factors `β_j/α_j` of the
+    /// corners do not multiply to 1 around the loop (within `1e-10`): unequal incoming and
+    /// outgoing cuts whose ratios do not cancel would change the speed at the seam.
+    pub fn try_with_closed(
+        points: Vec<P>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+    ) -> Result<Self, SplineError> {
+        Self::build(points, order, cuts, timing, true)
     }
 
     fn build(
         points: Vec<P>,
         order: usize,
-        fraction: f64,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let vs = polyline(&points, closed)?;
-        let count = vs.len() - 1;
-        let edges = vs
-            .windows(2)
-            .enumerate()
-            .map(|(index, w)| {
-                let (theta, e) = geodesic_frame(&w[0], &w[1])
-                    .ok_or_else(|| edge_error(index, count, closed, true))?;
-                if theta <= 0.0 {
-                    return Err(edge_error(index, count, closed, false));
-                }
-                Ok((
-                    PlaneRotation {
-                        a: w[0].clone(),
-                        b: e,
-                    },
-                    theta,
-                ))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        let core = CornerCore::build(&vs, edges, order, fraction, closed)?;
+        let edges = great_circle_edges(&vs, closed)?;
+        let core = CornerCore::build(&vs, edges, order, cuts, timing, closed)?;
         Ok(Self { points, core })
     }
 
@@ -325,16 +578,141 @@ impl<P: Manifold> CornerBlend<P> {
         self.core.poly.order()
     }
 
-    /// The part of each edge used by a corner blend.
+    /// The `[incoming, outgoing]` fractions of the edges used by each corner blend, one pair
+    /// per corner (interior point).
     #[must_use]
-    pub fn fraction(&self) -> f64 {
-        self.core.fraction
+    pub fn cuts(&self) -> &[[f64; 2]] {
+        &self.core.cuts
     }
 
     /// The derivatives of orders `0…=order` at `t` (exact, any order; one-sided at joints).
     #[must_use]
     pub fn derivatives(&self, t: f64, side: Side, order: usize) -> Vec<P::Vector> {
         self.core.derivatives(t, side, order)
+    }
+}
+
+/// Pobegailo's corner smoothing of a path of **circle arcs** on S², small circles included
+/// (§8.5–8.8: the joint of `R(m, uφ)p₁` and `R(n, uψ)p₂`, with the corner formula (8.19) for
+/// any two arcs of rotation orbits).
+impl CornerBlend<S2Point> {
+    /// Smooths the corners of the path whose edge `j` is the arc from `P_j` to `P_{j+1}` of the
+    /// circle given by `bends[j] = b ∈ (−1, 1)` (one per edge, `points − 1` values):
+    ///
+    /// ```text
+    /// m_j = √(1 − b²)·n̂ + b·ŝ,   n̂ = (P_j × P_{j+1})/|P_j × P_{j+1}|,   ŝ = (P_j + P_{j+1})/|P_j + P_{j+1}|
+    /// edge j:  u ↦ R(m_j, u·φ_j)·P_j,   φ_j ∈ (0, 2π) the angle about m_j from P_j to P_{j+1}
+    /// ```
+    ///
+    /// Every circle through two points has its axis `m` on the great circle of directions
+    /// equidistant from them (`m·P_j = m·P_{j+1}`), so one number per edge gives every arc of
+    /// the book's form `R(m, uφ)p` that joins the vertices: `b = 0` is the minor great arc
+    /// (then this is [`try_with`](Self::try_with)), `b > 0` tilts the axis towards the chord's
+    /// midpoint, bowing the arc to the right of travel (seen from outside the sphere), `b < 0`
+    /// to the left, and `|b| → 1` makes the arc a half circle of an ever smaller circle
+    /// (`φ → π`). The circle's plane is `m_j·x = b·cos(Θ_j/2)`, `Θ_j` the great-circle angle
+    /// of the edge.
+    ///
+    /// Cuts and timing are measured in the rotation angles `φ_j` about the edges' axes; the
+    /// corner blend and its Cⁿ continuity are those of the great-circle case, since (8.19) and
+    /// the knot rule only use that each edge is an orbit of a one-parameter rotation group
+    /// (`docs/derivations.md#pobegailo-general-corners`).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_with`](Self::try_with); [`SplineError::InvalidParameter`] (`bend`) for a list
+    /// whose length is not `points − 1` or a value outside `(−1, 1)`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{CornerBlend, CornerCuts, CornerTiming, Curve, Manifold, S2Point, Side};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let pts = vec![S2Point::X, S2Point::Y, S2Point::Z];
+    /// let cuts = CornerCuts::Uniform(0.25);
+    /// let c = CornerBlend::try_with_arcs(pts, 2, &cuts, CornerTiming::default(), &[0.5, -0.3])
+    ///     .unwrap();
+    /// let [t0, t1] = c.domain();
+    /// assert!(c.eval(t0).dist(&S2Point::X) < 1e-15 && c.eval(t1).dist(&S2Point::Z) < 1e-15);
+    /// // The first edge is a small circle: its midpoint is off the equator.
+    /// assert!(c.eval(0.5 * c.knots()[1]).as_dvec3().z.abs() > 0.1);
+    /// let (l, r) = (c.jet_at(c.knots()[1], Side::Left), c.jet_at(c.knots()[1], Side::Right));
+    /// assert!((l.acceleration - r.acceleration).length() < 1e-13); // C²
+    /// ```
+    pub fn try_with_arcs(
+        points: Vec<S2Point>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+        bends: &[f64],
+    ) -> Result<Self, SplineError> {
+        Self::arcs(points, order, cuts, timing, bends, false)
+    }
+
+    /// The closed polygon of [`try_with_closed`](CornerBlend::try_with_closed) with the
+    /// small-circle edges of [`try_with_arcs`](Self::try_with_arcs): one bend per edge, the
+    /// closing edge from the last point to the first last.
+    ///
+    /// # Errors
+    ///
+    /// As [`try_with_closed`](CornerBlend::try_with_closed) and
+    /// [`try_with_arcs`](Self::try_with_arcs) (`points.len()` bends).
+    pub fn try_with_arcs_closed(
+        points: Vec<S2Point>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+        bends: &[f64],
+    ) -> Result<Self, SplineError> {
+        Self::arcs(points, order, cuts, timing, bends, true)
+    }
+
+    fn arcs(
+        points: Vec<S2Point>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+        bends: &[f64],
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let vs = polyline(&points, closed)?;
+        let edge_count = vs.len() - 1;
+        let bend_error = |reason: String| SplineError::InvalidParameter {
+            name: "bend",
+            reason,
+        };
+        if bends.len() != edge_count {
+            return Err(bend_error(format!(
+                "expected {edge_count} values (one per edge), got {}",
+                bends.len()
+            )));
+        }
+        if let Some(j) = bends.iter().position(|b| b.is_nan() || b.abs() >= 1.0) {
+            return Err(bend_error(format!(
+                "entry {j} (the edge from point {j}): must be in (−1, 1), got {}",
+                bends[j]
+            )));
+        }
+        let mut edges = great_circle_edges(&vs, closed)?;
+        for (j, (flow, theta)) in edges.iter_mut().enumerate() {
+            let b = bends[j];
+            if b == 0.0 {
+                continue;
+            }
+            let (p, q) = (vs[j], vs[j + 1]);
+            let (n, mid) = (p.cross(q).normalize(), (p + q).normalize());
+            let m = n * (1.0 - b * b).sqrt() + mid * b;
+            let centre = m * m.dot(p);
+            let a = (p - centre).normalize();
+            let e = m.cross(a);
+            let r = q - centre;
+            let angle = math::atan2(r.dot(e), r.dot(a));
+            *theta = if angle > 0.0 { angle } else { angle + TAU };
+            *flow = PlaneRotation { a, b: e };
+        }
+        let core = CornerCore::build(&vs, edges, order, cuts, timing, closed)?;
+        Ok(Self { points, core })
     }
 }
 
@@ -436,7 +814,27 @@ impl CornerBlendS3 {
         order: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, fraction, false)
+        Self::try_with(
+            points,
+            order,
+            &CornerCuts::Uniform(fraction),
+            CornerTiming::default(),
+        )
+    }
+
+    /// Smooths the corners with the given cut-backs per corner and timing, as
+    /// [`CornerBlend::try_with`] (the speed is the angular speed on S³, half the rotation rate).
+    ///
+    /// # Errors
+    ///
+    /// As [`CornerBlend::try_with`].
+    pub fn try_with(
+        points: Vec<UnitQuat>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+    ) -> Result<Self, SplineError> {
+        Self::build(points, order, cuts, timing, false)
     }
 
     /// Smooths every corner of the closed orientation polygon `q₀ → … → q_{m−1} → q₀`, as
@@ -450,13 +848,33 @@ impl CornerBlendS3 {
         order: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, fraction, true)
+        Self::try_with_closed(
+            points,
+            order,
+            &CornerCuts::Uniform(fraction),
+            CornerTiming::default(),
+        )
+    }
+
+    /// The closed polygon with cuts and timing, as [`CornerBlend::try_with_closed`].
+    ///
+    /// # Errors
+    ///
+    /// As [`CornerBlend::try_with_closed`].
+    pub fn try_with_closed(
+        points: Vec<UnitQuat>,
+        order: usize,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
+    ) -> Result<Self, SplineError> {
+        Self::build(points, order, cuts, timing, true)
     }
 
     fn build(
         points: Vec<UnitQuat>,
         order: usize,
-        fraction: f64,
+        cuts: &CornerCuts,
+        timing: CornerTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let vs = polyline(&points, closed)?;
@@ -475,7 +893,7 @@ impl CornerBlendS3 {
                 Ok((LeftMultiplication { axis: n }, theta))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let core = CornerCore::build(&vs, edges, order, fraction, closed)?;
+        let core = CornerCore::build(&vs, edges, order, cuts, timing, closed)?;
         Ok(Self { points, core })
     }
 
@@ -497,10 +915,11 @@ impl CornerBlendS3 {
         self.core.poly.order()
     }
 
-    /// The part of each edge used by a corner blend.
+    /// The `[incoming, outgoing]` fractions of the edges used by each corner blend, one pair
+    /// per corner (interior point).
     #[must_use]
-    pub fn fraction(&self) -> f64 {
-        self.core.fraction
+    pub fn cuts(&self) -> &[[f64; 2]] {
+        &self.core.cuts
     }
 
     /// The derivatives of orders `0…=order` at `t` (exact, any order; one-sided at joints).

@@ -177,6 +177,13 @@ pub enum SplineError {
         /// What is wrong, for example `"is not tangent to the first key"`.
         reason: &'static str,
     },
+    /// The ambient (unnormalised) curve of the segment that starts at point `index` may pass
+    /// through the origin, where normalising it has no direction
+    /// ([`CatmullRomNlerp`](crate::CatmullRomNlerp): keys about a half turn apart or more).
+    ThroughOrigin {
+        /// Index of the segment's first key in the input points.
+        index: usize,
+    },
 }
 
 impl fmt::Display for SplineError {
@@ -275,6 +282,11 @@ impl fmt::Display for SplineError {
                 let which = if *start { "start" } else { "end" };
                 write!(f, "the {which} velocity {reason}")
             }
+            Self::ThroughOrigin { index } => write!(
+                f,
+                "the segment from point {index} to point {}: its ambient curve may pass through the origin, where normalising has no direction (the keys around it are too far apart; for quaternions, unflip them)",
+                index + 1
+            ),
         }
     }
 }

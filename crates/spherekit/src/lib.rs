@@ -36,11 +36,17 @@
 //! | [`BsplineKim`] | S³ | Kim–Kim–Shin cumulative cubic B-spline quaternion curve | C² |
 //! | [`Squad`] | S³ | Shoemake's squad, non-uniform knots | C¹ |
 //! | [`CatmullRom`] | all | Catmull-Rom by slerps (textbook rule on S³, intrinsic on S^m) | C¹ |
+//! | [`CatmullRomNlerp`] | all | Euclidean Catmull-Rom in ℝ^(m+1), normalised (not constant speed, off the great circles) | C¹ |
 //! | [`GammaSpline`] | S³ | Boehm's Gamma spline lifted to S³ with Kim's cubic segments | C¹ |
 //! | [`CubicSpline`] | all | cubic in the tangent space of each key, key velocities solved for C² (scipy's `RotationSpline` on S³); natural, clamped, scipy ends or closed | C² |
 //! | [`BetaSpline`] | all | spherical Beta spline (bias β₁, tension β₂) with a Newton interpolation solver | G¹ |
 //! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
-//! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline | Cⁿ |
+//! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline (S²: also of small-circle arcs), cuts per corner and side, start and speed ([`CornerCuts`], [`CornerTiming`]) | Cⁿ |
+//!
+//! The foundations these build on are public too: quaternion algebra ([`quaternion`]: the
+//! ternary product, orthogonal complement and quotient, the 4×4 multiplication matrices), the
+//! exponential of so(3) ([`exp_so3`], [`rotation_derivative`], [`skew`]), circles as planar
+//! sections ([`PlaneSection`]) and the Bernstein polynomials ([`bernstein`]).
 //!
 //! Every type but the two Bézier curves also builds a **closed loop** (`try_new_closed`, and
 //! [`ArcBlend::try_new_closed_with`]): the points wrap around, the curve returns to its first
@@ -103,10 +109,12 @@ pub use glam;
 mod ambient;
 mod arc_blend;
 mod arclength;
+pub mod bernstein;
 mod beta_solve;
 mod beta_spline;
 mod bezier;
 mod catmull_rom;
+mod catmull_rom_nlerp;
 mod circle;
 mod continuity;
 mod corner_blend;
@@ -121,9 +129,11 @@ mod kim;
 mod knots;
 mod manifold;
 mod math;
+pub mod quaternion;
 mod rotation;
 mod s2;
 mod s3;
+mod section;
 mod slerp_jet;
 mod smoothing;
 mod sn;
@@ -137,9 +147,12 @@ pub use beta_spline::{
 };
 pub use bezier::{Bezier, CubicSegment, cubic_jet, de_casteljau, de_casteljau_jet};
 pub use catmull_rom::CatmullRom;
+pub use catmull_rom_nlerp::CatmullRomNlerp;
 pub use circle::CircleArc;
 pub use continuity::{ContinuityClass, JointContinuity, continuity};
-pub use corner_blend::{CornerBlend, CornerBlendS3, DEFAULT_CORNER_FRACTION};
+pub use corner_blend::{
+    CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, DEFAULT_CORNER_FRACTION,
+};
 pub use cubic::{CubicEnd, CubicSolveInfo, CubicSpline, TANGENT_TOLERANCE};
 pub use curve::{Curve, Jet, Side};
 pub use error::{ArcLengthError, DomainError, PointError, SolveError, SplineError};
@@ -150,13 +163,15 @@ pub use kim::{BezierKim, BsplineKim};
 pub use knots::{Knots, MAX_KNOT_SPACING, MIN_KNOT_SPACING};
 pub use manifold::{ANTIPODAL_TOLERANCE, Manifold};
 pub use rotation::{
-    ROTATION_TOLERANCE, RotationError, rodrigues_compose, rotation_matrix_from_rodrigues,
+    ROTATION_TOLERANCE, RotationError, exp_so3, rodrigues_compose, rotation_derivative,
+    rotation_matrix_from_rodrigues, skew,
 };
 pub use s2::S2Point;
 pub use s3::{
     UnitQuat, angular_velocity_acceleration, angular_velocity_acceleration_body, unflip,
     velocity_from_angular, velocity_from_angular_body,
 };
+pub use section::PlaneSection;
 pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
 pub use sn::SnPoint;

@@ -434,3 +434,91 @@ pub fn rodrigues_compose(r1: DVec3, r2: DVec3) -> Option<DVec3> {
     let r = (r1 + r2 + r1.cross(r2)) / den;
     r.is_finite().then_some(r)
 }
+
+/// The skew matrix `K(v)` of so(3), `K(v)·x = v × x` (Pobegailo (2019), §4.6: `K₁, K₂, K₃` are
+/// `K(e₁)`, `K(e₂)`, `K(e₃)` and `L = l₁K₁ + l₂K₂ + l₃K₃ = K(l)`).
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::glam::DVec3;
+/// use spherekit::skew;
+///
+/// let (v, x) = (DVec3::new(1.0, -2.0, 0.5), DVec3::new(0.3, 0.1, -4.0));
+/// assert_eq!(skew(v) * x, v.cross(x));
+/// ```
+#[must_use]
+pub fn skew(v: DVec3) -> DMat3 {
+    DMat3::from_cols(
+        DVec3::new(0.0, v.z, -v.y),
+        DVec3::new(-v.z, 0.0, v.x),
+        DVec3::new(v.y, -v.x, 0.0),
+    )
+}
+
+/// The exponential of so(3): `exp(K(l))` for the tangent (rotation) vector `l = φ·n`, which is
+/// the rotation `R(n, φ)` by the angle `φ = |l|` about the unit axis `n` (Pobegailo (2019), §4.6):
+///
+/// ```text
+/// exp(φK(n)) = cos φ·I + sin φ·K(n) + (1 − cos φ)·n nᵀ
+/// ```
+///
+/// from `K^{2k} = (−1)^k (I − n nᵀ)` and `K^{2k+1} = (−1)^k K`. It equals the matrix of the
+/// quaternion `exp(l/2)` ([`UnitQuat::from_rotation_vector`]). The coefficients
+/// `sin φ/φ` and `(1 − cos φ)/φ²` use series near 0, so `l → 0` gives `I + K(l)` smoothly; a
+/// non-finite `l` gives non-finite entries.
+///
+/// # Examples
+///
+/// The book's example: `R(e₃, π/4)` has the tangent vector `l = (0, 0, π/4)`.
+///
+/// ```
+/// use spherekit::glam::DVec3;
+/// use spherekit::{UnitQuat, exp_so3};
+///
+/// let l = DVec3::new(0.0, 0.0, core::f64::consts::FRAC_PI_4);
+/// let r = exp_so3(l);
+/// let h = core::f64::consts::FRAC_1_SQRT_2;
+/// assert!((r * DVec3::X - DVec3::new(h, h, 0.0)).length() < 1e-15);
+/// assert!(r.abs_diff_eq(UnitQuat::from_rotation_vector(l).to_rotation_matrix(), 1e-15));
+/// ```
+#[must_use]
+pub fn exp_so3(l: DVec3) -> DMat3 {
+    let phi2 = l.length_squared();
+    let phi = phi2.sqrt();
+    // a = sin φ/φ, b = (1 − cos φ)/φ².
+    let (a, b) = if phi < 1e-4 {
+        (1.0 - phi2 / 6.0, 0.5 - phi2 / 24.0)
+    } else {
+        let half = math::sin(0.5 * phi);
+        (math::sin(phi) / phi, 2.0 * half * half / phi2)
+    };
+    let k = skew(l);
+    DMat3::IDENTITY + k * a + k * k * b
+}
+
+/// The derivative of the one-parameter subgroup `t ↦ R(n, ωt)` (Pobegailo (2019), §4.6, (4.27)
+/// at `t = 0`): `d/dt R(n, ωt) = ω·K(n)·R(n, ωt)`, for the unit axis `n` (normalised here) and
+/// the angular speed `ω`. Returns `(R(n, ωt), d/dt R(n, ωt))`; `None` when `n` has no direction.
+///
+/// # Examples
+///
+/// ```
+/// use spherekit::glam::DVec3;
+/// use spherekit::{rotation_derivative, skew};
+///
+/// // At t = 0 the tangent is ω·K(n) (4.27).
+/// let (r, dr) = rotation_derivative(DVec3::Z, 2.0, 0.0).unwrap();
+/// assert_eq!(r, spherekit::glam::DMat3::IDENTITY);
+/// assert_eq!(dr, skew(DVec3::Z) * 2.0);
+/// ```
+#[must_use]
+pub fn rotation_derivative(n: DVec3, omega: f64, t: f64) -> Option<(DMat3, DMat3)> {
+    let len = n.length();
+    if !(len.is_finite() && len > 0.0 && omega.is_finite() && t.is_finite()) {
+        return None;
+    }
+    let axis = n / len;
+    let r = exp_so3(axis * (omega * t));
+    Some((r, skew(axis) * r * omega))
+}

@@ -336,7 +336,7 @@ pub(crate) fn ipow(mut x: f64, mut e: usize) -> f64 {
 }
 
 /// `C(n, k)` as `f64` (exact while it fits in 53 bits).
-fn binomial(n: usize, k: usize) -> f64 {
+pub(crate) fn binomial(n: usize, k: usize) -> f64 {
     let k = k.min(n - k);
     let mut c = 1.0;
     for i in 0..k {

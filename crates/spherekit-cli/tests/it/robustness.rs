@@ -159,6 +159,7 @@ fn hundred_thousand_key_random_walks() {
         let spaces: &[(&str, usize)] = match method.spheres {
             Spheres::All => &[("S2", 3), ("S3", 4)],
             Spheres::S3 => &[("S3", 4)],
+            Spheres::S2 => &[("S2", 3)],
         };
         for &(space, coords) in spaces {
             let scene = json!({
@@ -188,6 +189,7 @@ fn ten_thousand_keys() {
         let spaces: &[(&str, usize)] = match method.spheres {
             Spheres::All => &[("S2", 3), ("S3", 4), ("S5", 6)],
             Spheres::S3 => &[("S3", 4)],
+            Spheres::S2 => &[("S2", 3)],
         };
         let one_curve = method.single_piece;
         // De Casteljau's triangle on S^m: O(n²) slerps per evaluation.

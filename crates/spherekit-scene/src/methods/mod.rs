@@ -9,6 +9,7 @@ pub(crate) mod bezier;
 pub(crate) mod bezier_kim;
 pub(crate) mod bspline_kim;
 pub(crate) mod catmull_rom;
+pub(crate) mod catmull_rom_nlerp;
 pub(crate) mod corner_blend;
 pub(crate) mod cubic;
 pub(crate) mod gamma;

@@ -11,6 +11,7 @@
 
 mod batch;
 mod closed;
+mod corner_params;
 mod registry;
 mod scene_sample;
 #[path = "../support/cases.rs"]

@@ -131,6 +131,7 @@ fn descriptors_match_the_constructions() {
         let spaces: &[&str] = match m.spheres {
             Spheres::All => &["S2", "S3", "S5"],
             Spheres::S3 => &["S3"],
+            Spheres::S2 => &["S2"],
         };
         for space in spaces {
             let build = |n: usize, knots: Option<Vec<f64>>| {
@@ -198,6 +199,7 @@ fn closed_descriptors_match_the_constructions() {
         let spaces: &[&str] = match m.spheres {
             Spheres::All => &["S2", "S3", "S5"],
             Spheres::S3 => &["S3"],
+            Spheres::S2 => &["S2"],
         };
         for space in spaces {
             let build = |n: usize, knots: Option<Vec<f64>>| {

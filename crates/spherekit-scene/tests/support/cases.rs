@@ -47,6 +47,7 @@ pub(crate) fn spaces(m: &Method) -> &'static [&'static str] {
     match m.spheres {
         Spheres::All => &["S2", "S3", "S5"],
         Spheres::S3 => &["S3"],
+        Spheres::S2 => &["S2"],
     }
 }
 

@@ -19,8 +19,9 @@ use core::f64::consts::TAU;
 use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSolver, BetaSpline, BsplineKim, CatmullRom,
-    CornerBlend, CornerBlendS3, Curve, GammaSpline, Gammas, GeodesicSpline, Manifold, NlerpSpline,
-    S2Point, Side, SnPoint, SplineError, Squad, UnitQuat, continuity,
+    CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, Curve, GammaSpline, Gammas,
+    GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad, UnitQuat,
+    continuity,
 };
 
 use crate::support::{Rng, check_derivatives, check_derivatives_at};
@@ -492,6 +493,64 @@ fn corner_blend_loops_blend_every_corner_and_are_cn_at_the_seam() {
             }
         }
     }
+}
+
+/// Cuts per corner, a start and a speed, and small-circle edges close too; incoming and
+/// outgoing cuts whose speed factors do not multiply to 1 around the loop are refused.
+#[test]
+fn corner_blend_loops_with_cuts_timing_and_arcs() {
+    let mut rng = Rng::new(22);
+    let m = 5;
+    let p = ring_s2(&mut rng, m);
+    let timing = CornerTiming {
+        start: -2.0,
+        speed: 1.7,
+    };
+    let per: Vec<f64> = (0..m).map(|_| rng.range(0.1, 0.45)).collect();
+    let c = CornerBlend::try_with_closed(p.clone(), 3, &CornerCuts::PerCorner(per.clone()), timing)
+        .unwrap();
+    assert_eq!(c.domain()[0], -2.0);
+    assert!((c.jet(-2.0).velocity.length() - 1.7).abs() < 1e-12);
+    check_loop(&c, None, Smooth::C2);
+    let [t0, t1] = c.domain();
+    check_seam_order(
+        &c.derivatives(t1, Side::Left, 3),
+        &c.derivatives(t0, Side::Right, 3),
+        3,
+    );
+    let bends: Vec<f64> = (0..m).map(|_| rng.range(-0.3, 0.3)).collect();
+    let arcs =
+        CornerBlend::try_with_arcs_closed(p.clone(), 2, &CornerCuts::Uniform(0.3), timing, &bends)
+            .unwrap();
+    check_loop(&arcs, None, Smooth::C2);
+    let e = CornerBlend::try_with_arcs_closed(
+        p.clone(),
+        2,
+        &CornerCuts::Uniform(0.3),
+        timing,
+        &bends[..m - 1],
+    )
+    .unwrap_err();
+    assert!(
+        matches!(e, SplineError::InvalidParameter { name: "bend", .. }),
+        "{e}"
+    );
+    // Pairs whose ratios cancel around the loop close; others would change speed at the seam.
+    let pairs: Vec<[f64; 2]> = vec![[0.2, 0.3], [0.3, 0.2], [0.25, 0.25], [0.2, 0.2], [0.3, 0.3]];
+    let q = ring_s3(&mut rng, m);
+    let c =
+        CornerBlendS3::try_with_closed(q.clone(), 2, &CornerCuts::Pairs(pairs), timing).unwrap();
+    check_loop(&c, None, Smooth::C2);
+    let skewed = vec![[0.2, 0.3]; m];
+    let e = CornerBlendS3::try_with_closed(q, 2, &CornerCuts::Pairs(skewed), timing).unwrap_err();
+    assert!(
+        matches!(&e, SplineError::InvalidParameter { name: "fraction", reason } if reason.contains("multiply to 1")),
+        "{e}"
+    );
+    let e =
+        CornerBlend::try_with_closed(p, 2, &CornerCuts::PerCorner(per[..m - 1].to_vec()), timing)
+            .unwrap_err();
+    assert!(e.to_string().contains("the points 1 to 4 and 0"), "{e}");
 }
 
 #[test]

@@ -120,6 +120,49 @@ fn interpolates_and_is_c2_on_s2_s3_s5() {
     }
 }
 
+/// `point_velocity` is the jet without its acceleration: the same bits, at keys, inside
+/// segments and at the ends, on every sphere.
+fn check_point_velocity<P: Manifold>(c: &CubicSpline<P>) {
+    let [t0, t1] = c.domain();
+    let mut ts: Vec<f64> = (0..=97)
+        .map(|k| t0 + (t1 - t0) * f64::from(k) / 97.0)
+        .collect();
+    ts.extend_from_slice(c.knots());
+    ts.sort_by(f64::total_cmp);
+    let mut batch = vec![c.point_velocity(t0); ts.len()];
+    c.point_velocity_many(&ts, &mut batch);
+    for (&t, (p, v)) in ts.iter().zip(&batch) {
+        let jet = c.jet(t);
+        let (q, w) = c.point_velocity(t);
+        assert!(
+            jet.point == q && jet.velocity == w,
+            "point_velocity at t = {t}"
+        );
+        assert!(*p == q && *v == w, "point_velocity_many at t = {t}");
+    }
+}
+
+#[test]
+fn point_velocity_is_the_jet_without_acceleration() {
+    let mut rng = Rng::new(5);
+    let knots = Some(KNOTS6.to_vec());
+    let p = walk_s2(&mut rng, 6, 1.5);
+    check_point_velocity(
+        &CubicSpline::try_new(p, knots.clone(), CubicEnd::Natural, false).unwrap(),
+    );
+    let q = rng.chain(6, 1.2);
+    check_point_velocity(
+        &CubicSpline::try_new(q.clone(), knots.clone(), CubicEnd::Scipy, false).unwrap(),
+    );
+    let mut closed_knots = KNOTS6.to_vec();
+    closed_knots.push(KNOTS6[5] + 1.0);
+    check_point_velocity(
+        &CubicSpline::try_new(q, Some(closed_knots), CubicEnd::Natural, true).unwrap(),
+    );
+    let s = rng.walk_sn(6, 5, 0.5);
+    check_point_velocity(&CubicSpline::try_new(s, knots, CubicEnd::Natural, false).unwrap());
+}
+
 #[test]
 fn closed_curves_are_c2_at_the_seam() {
     let mut rng = Rng::new(2);

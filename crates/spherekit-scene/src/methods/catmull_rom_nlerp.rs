@@ -1,0 +1,36 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! `catmull-rom-nlerp`: [`spherekit::CatmullRomNlerp`].
+
+use spherekit::CatmullRomNlerp;
+
+use crate::built::{Built, BuiltCurve, on_every_sphere};
+use crate::error::SceneError;
+use crate::registry::{KnotRule, Method, Spheres};
+use crate::scene::Input;
+
+pub(crate) static METHOD: Method = Method {
+    id: "catmull-rom-nlerp",
+    type_name: "CatmullRomNlerp",
+    summary: "Euclidean Catmull-Rom of the points in ℝ^(m+1) (ℝ⁴ for quaternions), normalised: not constant speed, off the great circles",
+    continuity: "C¹",
+    source: "Catmull & Rom (1974); normalised in ℝ⁴ as in Gortler (2012), §9.3",
+    spheres: Spheres::All,
+    knots: KnotRule::PerPoint { skip: 1 },
+    min_points: 4,
+    interpolates: false,
+    single_piece: false,
+    closes: false,
+    params: &[],
+    build,
+};
+
+fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
+    let knots = input.knots;
+    input.params.finish()?;
+    Ok(on_every_sphere!(input.points, |p| {
+        let curve = CatmullRomNlerp::try_new(p.clone(), knots)?;
+        Built::new(curve, p).with_order(1)
+    }))
+}
