@@ -23,12 +23,13 @@ export function curveControls(c, curve, space, method, edit) {
     if (spec.type === 'choice') controls.push(choiceControl(spec, value, edit));
     else if (spec.type === 'bool') controls.push(boolControl(spec, value, edit));
     else if (spec.type === 'vector') controls.push(vectorControl(spec, value, edit));
-    else controls.push(...numberControls(spec, value, n, edit));
+    else controls.push(...numberControls(spec, value, n, Boolean(curve.closed), edit));
   }
   if (method?.closes) controls.push(closedToggle(curve, edit));
   if (method?.knots?.skip !== undefined) {
-    // A closed curve has one more knot: the time it returns to the first point.
-    const count = n - 2 * method.knots.skip + (curve.closed ? 1 : 0);
+    // A closed curve has a knot at every point (each is a key of the loop) and one more: the
+    // time it returns to the first point (the registry's KnotRule::count_for).
+    const count = curve.closed ? n + 1 : n - 2 * method.knots.skip;
     controls.push(knotsField(c, curve, count, edit));
   }
   controls.push(paramsJson(c, params, edit));
@@ -89,11 +90,14 @@ function boolControl(spec, value, edit) {
   return label;
 }
 
-/** One slider, or one per entry of a per-joint list, and the "per joint" toggle. */
-function numberControls(spec, value, n, edit) {
+/**
+ * One slider, or one per entry of a per-joint list, and the "per joint" toggle. A loop has an
+ * entry at every point (the registry's PerJoint::count_for).
+ */
+function numberControls(spec, value, n, closed, edit) {
   const controls = [];
-  const joints = spec.per_joint ? n - 2 * spec.per_joint.skip : 0;
-  const first = spec.per_joint?.first ?? 0;
+  const joints = spec.per_joint ? (closed ? n : n - 2 * spec.per_joint.skip) : 0;
+  const first = closed ? 0 : (spec.per_joint?.first ?? 0);
   const list = Array.isArray(value) ? value : null;
   if (list) {
     list.forEach((v, k) => controls.push(slider(spec, `${spec.label} [${k + first}]`, v, (x, live) => {
