@@ -71,7 +71,7 @@
 
 use crate::ambient::Ambient;
 use crate::circle::{COINCIDENT_TOLERANCE, CircleArc};
-use crate::curve::{Curve, Jet, Side};
+use crate::curve::{Jet, Side};
 use crate::error::SplineError;
 use crate::flow::{PlaneRotation, Segment, Weights};
 use crate::knots::Knots;
@@ -819,39 +819,9 @@ fn warps<P: Manifold>(circles: &[CircleArc<P>], knots: &Knots, closed: bool) -> 
         .collect()
 }
 
-impl<P: Manifold> Curve for ArcBlend<P> {
-    type Point = P;
-
-    fn domain(&self) -> [f64; 2] {
-        self.knots.domain()
-    }
-
-    fn joints(&self) -> &[f64] {
-        self.knots.as_slice()
-    }
-
-    fn is_closed(&self) -> bool {
-        self.closed
-    }
-
-    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
-        let (i, s) = self.knots.locate(t, side);
-        self.jet_local(i, s)
-    }
-
-    fn eval(&self, t: f64) -> P {
-        let (i, s) = self.knots.locate(t, Side::Right);
-        self.eval_local(i, s)
-    }
-
-    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
-    }
-
-    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+crate::curve::piecewise_curve! {
+    impl [P: Manifold] for ArcBlend<P> {
+        type Point = P;
     }
 }
 

@@ -135,3 +135,53 @@ pub trait Curve: core::fmt::Debug {
 pub(crate) fn clamp_param(t: f64, [t0, t1]: [f64; 2]) -> f64 {
     if t.is_nan() { t0 } else { t.clamp(t0, t1) }
 }
+
+/// The [`Curve`] impl of a curve made of pieces between its knots, written once: the type has
+/// the fields `knots: Knots` and `closed: bool` and the inherent methods `eval_local(i, s)` and
+/// `jet_local(i, s)`, which evaluate piece `i` at the local parameter [`Knots::locate`] gives
+/// (the batch calls step through the pieces with `Knots::map_into`). Further trait items of
+/// the type follow the point type.
+///
+/// [`Knots::locate`]: crate::Knots::locate
+macro_rules! piecewise_curve {
+    (impl $([$($generics:tt)*])? for $ty:ty { type Point = $point:ty; $($extra:tt)* }) => {
+        impl $(<$($generics)*>)? $crate::Curve for $ty {
+            type Point = $point;
+
+            fn domain(&self) -> [f64; 2] {
+                self.knots.domain()
+            }
+
+            fn joints(&self) -> &[f64] {
+                self.knots.as_slice()
+            }
+
+            fn is_closed(&self) -> bool {
+                self.closed
+            }
+
+            fn jet_at(&self, t: f64, side: $crate::Side) -> $crate::Jet<$point> {
+                let (i, s) = self.knots.locate(t, side);
+                self.jet_local(i, s)
+            }
+
+            fn eval(&self, t: f64) -> $point {
+                let (i, s) = self.knots.locate(t, $crate::Side::Right);
+                self.eval_local(i, s)
+            }
+
+            fn eval_many(&self, ts: &[f64], out: &mut [$point]) {
+                self.knots
+                    .map_into(ts, $crate::Side::Right, out, |i, s| self.eval_local(i, s));
+            }
+
+            fn jet_many(&self, ts: &[f64], out: &mut [$crate::Jet<$point>]) {
+                self.knots
+                    .map_into(ts, $crate::Side::Right, out, |i, s| self.jet_local(i, s));
+            }
+
+            $($extra)*
+        }
+    };
+}
+pub(crate) use piecewise_curve;

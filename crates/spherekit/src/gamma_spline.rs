@@ -538,39 +538,9 @@ fn control_vertices(
     Ok(b)
 }
 
-impl Curve for GammaSpline {
-    type Point = UnitQuat;
-
-    fn domain(&self) -> [f64; 2] {
-        self.knots.domain()
-    }
-
-    fn joints(&self) -> &[f64] {
-        self.knots.as_slice()
-    }
-
-    fn is_closed(&self) -> bool {
-        self.closed
-    }
-
-    fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
-        let (i, s) = self.knots.locate(t, side);
-        self.jet_local(i, s)
-    }
-
-    fn eval(&self, t: f64) -> UnitQuat {
-        let (i, s) = self.knots.locate(t, Side::Right);
-        self.eval_local(i, s)
-    }
-
-    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
-    }
-
-    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+crate::curve::piecewise_curve! {
+    impl for GammaSpline {
+        type Point = UnitQuat;
     }
 }
 

@@ -177,39 +177,9 @@ impl<P: Manifold> GeodesicSpline<P> {
     }
 }
 
-impl<P: Manifold> Curve for GeodesicSpline<P> {
-    type Point = P;
-
-    fn domain(&self) -> [f64; 2] {
-        self.knots.domain()
-    }
-
-    fn joints(&self) -> &[f64] {
-        self.knots.as_slice()
-    }
-
-    fn is_closed(&self) -> bool {
-        self.closed
-    }
-
-    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
-        let (i, s) = self.knots.locate(t, side);
-        self.jet_local(i, s)
-    }
-
-    fn eval(&self, t: f64) -> P {
-        let (i, s) = self.knots.locate(t, Side::Right);
-        self.eval_local(i, s)
-    }
-
-    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
-    }
-
-    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+crate::curve::piecewise_curve! {
+    impl [P: Manifold] for GeodesicSpline<P> {
+        type Point = P;
     }
 }
 

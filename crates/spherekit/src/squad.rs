@@ -5,7 +5,7 @@
 
 use glam::DVec4;
 
-use crate::curve::{Curve, Jet, Side};
+use crate::curve::Jet;
 use crate::error::SplineError;
 use crate::geodesic::{MIN_LOOP_POINTS, check_chain, check_loop, wrapped};
 use crate::knots::Knots;
@@ -203,39 +203,9 @@ impl Squad {
     }
 }
 
-impl Curve for Squad {
-    type Point = UnitQuat;
-
-    fn domain(&self) -> [f64; 2] {
-        self.knots.domain()
-    }
-
-    fn joints(&self) -> &[f64] {
-        self.knots.as_slice()
-    }
-
-    fn is_closed(&self) -> bool {
-        self.closed
-    }
-
-    fn jet_at(&self, t: f64, side: Side) -> Jet<UnitQuat> {
-        let (i, tau) = self.knots.locate(t, side);
-        self.jet_local(i, tau)
-    }
-
-    fn eval(&self, t: f64) -> UnitQuat {
-        let (i, tau) = self.knots.locate(t, Side::Right);
-        self.eval_local(i, tau)
-    }
-
-    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
-    }
-
-    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+crate::curve::piecewise_curve! {
+    impl for Squad {
+        type Point = UnitQuat;
     }
 }
 
