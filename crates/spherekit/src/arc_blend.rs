@@ -705,7 +705,7 @@ impl<P: Manifold> ArcBlend<P> {
 
     /// The derivatives of orders `0…=order` at `t` with respect to `t` (ambient vectors; order 0
     /// is the point), exactly, for any order; at a joint the one-sided values from `side`.
-    /// Used to check continuity beyond the second derivative of [`Curve::jet_at`].
+    /// Used to check continuity beyond the second derivative of [`Curve::jet_at`](crate::Curve::jet_at).
     #[must_use]
     pub fn derivatives(&self, t: f64, side: Side, order: usize) -> Vec<P::Vector> {
         let (i, s) = self.knots.locate(t, side);
