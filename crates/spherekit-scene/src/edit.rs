@@ -261,7 +261,8 @@ impl Document {
     }
 
     /// Replaces curve `curve`'s fields other than `points` by `fields` (`method`, `params`,
-    /// `knots`, `canonicalize`, `color`; absent ones are removed).
+    /// `knots`, `canonicalize`, `closed`, `parametrization`, `extrapolate`, `color`, `label`;
+    /// absent ones are removed).
     ///
     /// # Errors
     ///
@@ -408,6 +409,12 @@ impl Document {
             }
         }
         scene.view()?;
+        let all: Vec<&BuiltCurve> = fresh
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| c.as_ref().or_else(|| self.curves.get(i)))
+            .collect();
+        scene.check_parameters_of(&all)?;
         let built = fresh.iter().filter(|c| c.is_some()).count();
         let mut old: Vec<Option<BuiltCurve>> = core::mem::take(&mut self.curves)
             .into_iter()
@@ -474,13 +481,15 @@ fn curve_doc_mut(
 }
 
 /// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 8] = [
+const CURVE_FIELDS: [&str; 10] = [
     "method",
     "points",
     "knots",
     "params",
     "canonicalize",
     "closed",
+    "parametrization",
+    "extrapolate",
     "color",
     "label",
 ];

@@ -57,6 +57,7 @@ mod params;
 mod registry;
 mod scene;
 mod space;
+mod timing;
 mod view;
 
 pub use built::{
@@ -70,4 +71,5 @@ pub use scene::{
     CurveSpec, DEFAULT_SAMPLES, MAX_LABEL_CHARS, MAX_SAMPLES, SampleOptions, Sampling, Scene,
 };
 pub use space::{MAX_DIMENSION, Space};
+pub use timing::{EXTRAPOLATIONS, PARAMETRIZATIONS, Parametrization, extrapolate_name};
 pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, MAX_TITLE_CHARS, Plot, PlotTime, View};
