@@ -563,7 +563,7 @@ impl Scene {
             if !t.is_finite() {
                 return Err(field_error(
                     format!("eval_at[{k}]"),
-                    format!("{t} is not a finite number"),
+                    format!("{} is not a finite number", number(t)),
                 ));
             }
             for (i, (spec, curve)) in self.curves.iter().zip(curves).enumerate() {
@@ -576,10 +576,12 @@ impl Scene {
                     "the curve".to_owned()
                 };
                 let policy = extrapolate_name(spec.extrapolate);
+                let t = number(t);
                 let message = match e {
                     DomainError::Outside { domain, .. } => format!(
                         "{t} is outside the domain [{}, {}] of {whose}, whose \"extrapolate\" is \"{policy}\"",
-                        domain[0], domain[1]
+                        number(domain[0]),
+                        number(domain[1])
                     ),
                     _ if spec.extrapolate == Extrapolate::Segment => format!(
                         "{t} is so far outside the domain of {whose} that its continued end segment overflows"
@@ -654,6 +656,16 @@ impl Scene {
             out.insert("curves".into(), Value::Array(list.collect()));
         }
         Value::Object(out)
+    }
+}
+
+/// A parameter as an error message shows it: plain digits for ordinary sizes, an exponent for
+/// very large and very small ones (`1e300`, not three hundred digits).
+fn number(t: f64) -> String {
+    if t != 0.0 && t.is_finite() && !(1e-5..1e16).contains(&t.abs()) {
+        format!("{t:e}")
+    } else {
+        format!("{t}")
     }
 }
 

@@ -122,6 +122,7 @@ impl<P: ScenePoint> Built<P> {
                         "length": arc.length(),
                         "accuracy": arc.accuracy(),
                         "cells": info.cells,
+                        "unresolved": info.unresolved,
                         "stalls": stalls,
                     }),
                 );

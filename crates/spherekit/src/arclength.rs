@@ -46,6 +46,11 @@ const GL_W: [f64; NODES] = [
 /// Cells are halved at most this many times below a piece.
 const MAX_DEPTH: u32 = 50;
 
+/// A piece has at most about this many cells: past it, cells are accepted as they are (and
+/// counted in [`ArcLengthInfo::unresolved`]), so that a curve whose speed is rounding noise
+/// everywhere (keys 1e-9 apart, a near-antipodal step) cannot make the bisection exponential.
+const MAX_CELLS_PER_PIECE: usize = 2048;
+
 /// Cells at least this deep (narrower than 2⁻²⁰ of their piece) mark a place where the speed is
 /// not smooth at the scale of the piece: in practice a zero of the speed (a cusp, where `|c′|`
 /// has a kink) or a near-zero. They are reported as [`Stall`]s.
@@ -84,8 +89,8 @@ pub struct ArcLengthInfo {
     pub cells: usize,
     /// The number of evaluations of the curve's jet during construction.
     pub evaluations: usize,
-    /// Cells accepted at the subdivision limit without meeting the accuracy (zero for curves
-    /// whose speed is continuous on each piece).
+    /// Cells accepted at the subdivision limit (50 halvings, or about 2048 cells in a piece)
+    /// without meeting the accuracy (zero for curves whose speed is smooth on each piece).
     pub unresolved: usize,
 }
 
@@ -396,6 +401,8 @@ struct Builder<'a, C: Curve> {
     minima: Vec<(f64, f64)>,
     evaluations: usize,
     unresolved: usize,
+    /// The index of the first cell of the piece being built.
+    piece_start: usize,
 }
 
 impl<C: Curve> Builder<'_, C> {
@@ -439,7 +446,10 @@ impl<C: Curve> Builder<'_, C> {
         let scale = sigma.iter().fold(0.0_f64, |m, &x| m.max(x));
         let tol = self.tol.max(64.0 * f64::EPSILON * scale);
         let mid = 0.5 * (a + b);
-        let splittable = depth < MAX_DEPTH && a < mid && mid < b;
+        let splittable = depth < MAX_DEPTH
+            && a < mid
+            && mid < b
+            && self.cells.len() - self.piece_start < MAX_CELLS_PER_PIECE;
         if splittable {
             let left = self.speeds(a, mid)?;
             let right = self.speeds(mid, b)?;
@@ -560,6 +570,7 @@ impl<C: Curve> ArcLength<C> {
             minima: Vec::new(),
             evaluations: 0,
             unresolved: 0,
+            piece_start: 0,
         };
         let mut stalls = Vec::new();
         let mut joints = vec![0.0];
@@ -567,6 +578,7 @@ impl<C: Curve> ArcLength<C> {
         for w in curve.joints().windows(2) {
             let (a, b) = (w[0], w[1]);
             let first = builder.cells.len();
+            builder.piece_start = first;
             let sigma = builder.speeds(a, b)?;
             builder.refine(a, b, sigma, 0)?;
             let piece_len: f64 = builder.cells[first..].iter().map(|c| c.s1).sum();
