@@ -872,7 +872,7 @@ impl<C: Curve> Curve for ArcLength<C> {
 }
 
 /// Samples per chunk of [`ArcLength`]'s batch evaluation (its parameters live on the stack).
-const BATCH: usize = 64;
+const BATCH: usize = 256;
 
 impl<C: Curve> ArcLength<C> {
     /// The curve's parameter `t(s)` and the side of the curve's jet there: at a cell end the
