@@ -308,9 +308,8 @@ fn arclength_on_every_method_has_equal_steps_and_unit_speed() {
         // polylines through the curve's own points, split at the joints (where C⁰ methods turn).
         let step = length / 8.0;
         let joints = joints(&curves[0]);
-        for k in 0..8 {
-            #[expect(clippy::cast_precision_loss, reason = "small counts")]
-            let (a, b) = (k as f64 * step, (k + 1) as f64 * step);
+        for k in 0..8_u8 {
+            let (a, b) = (f64::from(k) * step, f64::from(k + 1) * step);
             let mut cuts: Vec<f64> = joints.iter().copied().filter(|&j| j > a && j < b).collect();
             cuts.insert(0, a);
             cuts.push(b);
@@ -385,7 +384,8 @@ fn arclength_stays_finite_and_reports_stalls_at_identical_keys_and_cusps() {
 fn geodesic_at_constant_speed_is_reproduced() {
     // Knots proportional to the angles: the geodesic spline already has unit speed.
     let s = json!({ "space": "S2", "method": "geodesic",
-        "points": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "knots": [0, 1.5707963267948966, 3.141592653589793],
+        "points": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+        "knots": [0, std::f64::consts::FRAC_PI_2, std::f64::consts::PI],
         "eval_at": [0.3, 1.0, 2.0, 3.0] });
     let arc = {
         let mut a = s.clone();
