@@ -269,9 +269,17 @@ impl Document {
     /// The CLI's message for a bad curve.
     pub fn set_curve(&mut self, curve: usize, fields: Map<String, Value>) -> Result<(), EditError> {
         let mut doc = self.doc.clone();
+        let listed = doc.contains_key("curves");
         let c = curve_doc_mut(&mut doc, curve)?;
         let points = c.remove("points");
-        c.clear();
+        if listed {
+            c.clear();
+        } else {
+            // A single curve's fields share the object with the scene's (`space`, `view`, …).
+            for k in CURVE_FIELDS {
+                c.remove(k);
+            }
+        }
         c.extend(fields);
         if let Some(p) = points {
             c.insert("points".into(), p);

@@ -363,6 +363,7 @@ fn the_playground_carries_parametrization_and_extrapolate() {
         0,
         r#"{"method":"squad","parametrization":"arclength","extrapolate":"extend"}"#,
     )
+    .map_err(message)
     .unwrap();
     let curve: serde_json::Value = serde_json::from_str(&pg.curve_json(0).unwrap()).unwrap();
     assert_eq!(curve["parametrization"], "arclength", "written back");

@@ -414,6 +414,20 @@ fn documents_carry_both_fields_and_write_them_back() {
         r#"{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0],[0,0,1]]}"#,
     )
     .unwrap();
+    // Only the curve's own fields: the scene's (`space`) stay where they are.
+    let mut only = Document::from_json(
+        r#"{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0],[0,0,1]],"samples":5}"#,
+    )
+    .unwrap();
+    let fields = json!({ "method": "geodesic", "extrapolate": "error" });
+    only.set_curve(0, fields.as_object().unwrap().clone())
+        .unwrap();
+    let back: Value = serde_json::from_str(&only.to_json()).unwrap();
+    assert_eq!(
+        (back["space"].clone(), back["samples"].clone()),
+        (json!("S2"), json!(5))
+    );
+    assert_eq!(back["extrapolate"], "error");
     let mut fields = doc.curve(0).unwrap().clone();
     fields.remove("points");
     fields.insert("parametrization".into(), json!("arclength"));
