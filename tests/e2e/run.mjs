@@ -427,14 +427,18 @@ test('the parameter controls edit the scene', async () => {
 
 test('the constant-speed toggle and the extrapolation choice edit the scene', async () => {
   const page = await newPage({ width: 1280, height: 860 });
-  const scene = { space: 'S2', method: 'geodesic', points: [[1, 0, 0], [0, 1, 0], [0, 0.6, 0.8]], knots: [0, 1, 5] };
+  const scene = {
+    space: 'S2', method: 'geodesic', points: [[1, 0, 0], [0, 1, 0], [0, 0.6, 0.8]], knots: [0, 1, 5],
+    view: { plot: 'speed' },
+  };
   await openPlayground(page, sceneUrl(JSON.stringify(scene)));
   const curve = async () => JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0)));
   const before = await canvasHash(page);
   await page.getByLabel('Constant speed of curve 0').check();
   assert.equal((await curve()).parametrization, 'arclength');
   const domain = await page.evaluate(() => Array.from(window.spherekitPage.handle().sample_array(0, 'domain')));
-  assert.ok(Math.abs(domain[1] - Math.PI) < 1e-9, `the domain is [0, L]: ${domain}`);
+  // Two great-circle arcs: a quarter turn and atan2(0.8, 0.6).
+  assert.ok(Math.abs(domain[1] - (Math.PI / 2 + Math.atan2(0.8, 0.6))) < 1e-9, `the domain is [0, L]: ${domain}`);
   assert.notEqual(await canvasHash(page), before, 'the speed plot is redrawn');
   await page.getByLabel('Extrapolation of curve 0').selectOption('extend');
   assert.equal((await curve()).extrapolate, 'extend');
