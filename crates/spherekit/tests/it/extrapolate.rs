@@ -310,13 +310,22 @@ fn segment_continues_the_open_cubic_end_segments() {
     for t in [t0, t0 + 0.1 * (c.knots()[1] - t0), t1 - 1e-3, t1] {
         let (a, b) = (c.continued_jet(t).unwrap(), c.jet_at(t, Side::Left));
         assert!(a.point.dist(&b.point) < 1e-14, "point at {t}");
-        assert!((a.velocity - b.velocity).length() < 1e-12, "velocity at {t}");
-        assert!((a.acceleration - b.acceleration).length() < 1e-10, "acceleration at {t}");
+        assert!(
+            (a.velocity - b.velocity).length() < 1e-12,
+            "velocity at {t}"
+        );
+        assert!(
+            (a.acceleration - b.acceleration).length() < 1e-10,
+            "acceleration at {t}"
+        );
     }
     // C² through both ends.
     for (inside, outside) in [(t0, t0 - 1e-7), (t1, t1 + 1e-7)] {
         let (a, b) = (c.jet_at(inside, Side::Right), e.jet(outside));
-        assert!((a.velocity - b.velocity).length() < 1e-5, "velocity through {inside}");
+        assert!(
+            (a.velocity - b.velocity).length() < 1e-5,
+            "velocity through {inside}"
+        );
         assert!((a.acceleration - b.acceleration).length() < 1e-4);
     }
     // Finite differences outside.
@@ -341,5 +350,8 @@ fn segment_continues_the_open_cubic_end_segments() {
     assert!(closed.jet_beyond(c1 + 1.0).is_none());
     let geodesic = GeodesicSpline::try_new(rng.chain(3, 0.8), None).unwrap();
     let g = Extrapolated::new(geodesic, Extrapolate::Segment);
-    assert_eq!(g.try_jet(3.0).unwrap_err(), DomainError::Unbounded { t: 3.0 });
+    assert_eq!(
+        g.try_jet(3.0).unwrap_err(),
+        DomainError::Unbounded { t: 3.0 }
+    );
 }
