@@ -287,8 +287,9 @@ impl Document {
         self.apply(doc)
     }
 
-    /// Gives curve `curve` another method: parameters the new method does not have go, and
-    /// knots go unless the new method takes as many for these points.
+    /// Gives curve `curve` another method: parameters the new method does not have go, knots
+    /// go unless the new method takes as many for these points, and `"extrapolate":
+    /// "segment"` goes unless the new method's curve has end segments to continue.
     ///
     /// # Errors
     ///
@@ -315,7 +316,18 @@ impl Document {
                 c.remove("params");
             }
         }
-        self.apply(doc)
+        let continued = c.get("extrapolate") == Some(&json!("segment"));
+        match self.apply(doc.clone()) {
+            // `"extrapolate": "segment"` goes when the new method's curve has no end segment
+            // to continue (as knots go when it takes other knots).
+            Err(e) if continued && names_field(&e, "extrapolate") => {
+                if let Ok(c) = curve_doc_mut(&mut doc, curve) {
+                    c.remove("extrapolate");
+                }
+                self.apply(doc)
+            }
+            result => result,
+        }
     }
 
     /// Adds a curve with `method` through the same points as curve 0 (a single-curve scene
@@ -441,6 +453,18 @@ impl Document {
         self.doc = doc;
         Ok(())
     }
+}
+
+/// Whether an edit failed on a curve's `field` (`extrapolate`, or `curves[i].extrapolate`).
+fn names_field(e: &EditError, name: &str) -> bool {
+    let mut e = match e {
+        EditError::Scene(e) => e,
+        _ => return false,
+    };
+    while let SceneError::InCurve { error, .. } = e {
+        e = error;
+    }
+    matches!(e, SceneError::Field { field, .. } if field == name)
 }
 
 /// Builds curve `i` of `scene` alone, with the error message [`Scene::build`] would give.

@@ -460,4 +460,17 @@ fn documents_carry_both_fields_and_write_them_back() {
         e.starts_with("eval_at[0]: 2 is outside the domain [0, 1]"),
         "{e}"
     );
+    // Another method: "segment" goes with the cubic (as knots go with a method that takes
+    // none), every other field stays.
+    let mut cubic = Document::from_json(
+        r#"{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0],[0,0,1]],"extrapolate":"segment","parametrization":"native"}"#,
+    )
+    .unwrap();
+    cubic.set_method(0, "geodesic").unwrap();
+    let back: Value = serde_json::from_str(&cubic.to_json()).unwrap();
+    assert_eq!(
+        (back["method"].clone(), back.get("extrapolate")),
+        (json!("geodesic"), None)
+    );
+    assert_eq!(back["parametrization"], "native");
 }
