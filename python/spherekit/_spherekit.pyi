@@ -21,6 +21,8 @@ class Curve:
         closed: bool = False,
         scalar_first: bool = False,
         canonicalize: Optional[bool] = None,
+        parametrization: Optional[Literal["native", "arclength"]] = None,
+        extrapolate: Optional[Literal["hold", "extend", "cycle", "error", "segment"]] = None,
         **params: Any,
     ) -> None: ...
     def __call__(self, t: _Times, order: Literal[0, 1, 2] = 0) -> npt.NDArray[np.float64]: ...

@@ -28,7 +28,7 @@ def curves_of(scene):
 
 def curve_args(scene):
     kwargs = dict(scene.get("params", {}))
-    for key in ("knots", "closed", "canonicalize"):
+    for key in ("knots", "closed", "canonicalize", "parametrization", "extrapolate"):
         if key in scene:
             kwargs[key] = scene[key]
     return scene["method"], np.array(scene["points"], dtype=float), dict(space=scene["space"], scalar_first=True, **kwargs)
@@ -148,3 +148,23 @@ def test_bad_evaluation_arguments():
     for call in (lambda: c([[0.5]]), lambda: c(0.5, 3), lambda: c("x")):
         with pytest.raises(ValueError):
             call()
+
+
+def test_arclength_and_extrapolate_options():
+    keys = [[1, 0, 0], [0, 1, 0], [0, 0.6, 0.8], [0.6, 0, 0.8]]
+    c = spherekit.Curve("catmull-rom", keys, parametrization="arclength", extrapolate="extend")
+    a, b = c.domain
+    assert a == 0.0 and b > 0.5
+    speed = np.linalg.norm(c(np.linspace(a, b, 50), 1), axis=1)
+    np.testing.assert_allclose(speed, 1.0, atol=1e-9)
+    # Extended past the end at the end's unit speed, along the end geodesic.
+    end = c(b)
+    assert abs(np.arccos(np.clip(np.dot(c(b + 0.5), end), -1, 1)) - 0.5) < 1e-9
+    held = spherekit.Curve("catmull-rom", keys)
+    np.testing.assert_array_equal(held([held.domain[1] + 1], 1), [[0.0, 0.0, 0.0]])
+    strict = spherekit.Curve("geodesic", keys[:2], extrapolate="error")
+    assert strict(0.5).shape == (3,)
+    with pytest.raises(ValueError, match=r"eval_at\[1\]: 2 is outside the domain \[0, 1\]"):
+        strict([0.5, 2.0])
+    with pytest.raises(ValueError, match='extrapolate: "cycle" repeats a closed curve'):
+        spherekit.Curve("geodesic", keys, extrapolate="cycle")

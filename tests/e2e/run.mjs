@@ -425,6 +425,33 @@ test('the parameter controls edit the scene', async () => {
   await page.close();
 });
 
+test('the constant-speed toggle and the extrapolation choice edit the scene', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const scene = {
+    space: 'S2', method: 'geodesic', points: [[1, 0, 0], [0, 1, 0], [0, 0.6, 0.8]], knots: [0, 1, 5],
+    view: { plot: 'speed' },
+  };
+  await openPlayground(page, sceneUrl(JSON.stringify(scene)));
+  const curve = async () => JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0)));
+  const before = await canvasHash(page);
+  await page.getByLabel('Constant speed of curve 0').check();
+  assert.equal((await curve()).parametrization, 'arclength');
+  const domain = await page.evaluate(() => Array.from(window.spherekitPage.handle().sample_array(0, 'domain')));
+  // Two great-circle arcs: a quarter turn and atan2(0.8, 0.6).
+  assert.ok(Math.abs(domain[1] - (Math.PI / 2 + Math.atan2(0.8, 0.6))) < 1e-9, `the domain is [0, L]: ${domain}`);
+  assert.notEqual(await canvasHash(page), before, 'the speed plot is redrawn');
+  await page.getByLabel('Extrapolation of curve 0').selectOption('extend');
+  assert.equal((await curve()).extrapolate, 'extend');
+  // A policy this curve has no value for: the scene format's message, the scene unchanged.
+  await page.getByLabel('Extrapolation of curve 0').selectOption('segment');
+  assert.match(await page.textContent('#error'), /^error: extrapolate: "segment"/);
+  assert.equal((await curve()).extrapolate, 'extend');
+  await page.getByLabel('Constant speed of curve 0').uncheck();
+  assert.equal((await curve()).parametrization, undefined);
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
 test('screenshots of the playground', async () => {
   const page = await newPage({ width: 1280, height: 860 });
   const s2 = await readFile(path.join(goldenDir, 'compare_geodesic_nlerp_s2.json'), 'utf8');

@@ -9,7 +9,8 @@ import { inSpaces } from './state.js';
 /**
  * The controls of curve `c` (its scene description `curve`, on `space`) for registry entry
  * `method`. `edit.param(name, value, { live })` sets a parameter (null removes it; `live` while
- * a slider moves), `edit.field(name, value)` a curve field (`knots`, `params`, `closed`; null
+ * a slider moves), `edit.field(name, value)` a curve field (`knots`, `params`, `closed`,
+ * `parametrization`, `extrapolate`; null
  * removes it), `edit.fields({ name: value, … })` several at once,
  * `edit.error(message)` reports text the page could not read.
  */
@@ -26,6 +27,7 @@ export function curveControls(c, curve, space, method, edit) {
     else controls.push(...numberControls(spec, value, n, Boolean(curve.closed), edit));
   }
   if (method?.closes) controls.push(closedToggle(curve, edit));
+  controls.push(...timingControls(c, curve, edit));
   if (method?.knots?.skip !== undefined) {
     // A closed curve has a knot at every point (each is a key of the loop) and one more: the
     // time it returns to the first point (the registry's KnotRule::count_for).
@@ -43,10 +45,40 @@ function closedToggle(curve, edit) {
   const box = document.createElement('input');
   box.type = 'checkbox';
   box.checked = Boolean(curve.closed);
-  // The knots of an open curve do not fit a closed one (one more): they go.
-  box.addEventListener('change', () => edit.fields({ closed: box.checked ? true : null, knots: null }));
+  // The knots of an open curve do not fit a closed one (one more): they go, and so does
+  // `extrapolate: "cycle"` when the loop opens.
+  const cycle = () => (!box.checked && curve.extrapolate === 'cycle' ? { extrapolate: null } : {});
+  box.addEventListener('change', () => edit.fields({ closed: box.checked ? true : null, knots: null, ...cycle() }));
   label.append(box, ' closed loop');
   return label;
+}
+
+/**
+ * The curve's timing, the same for every method: "constant speed" (`parametrization:
+ * "arclength"`, the curve at unit speed over [0, L]) and what it is outside its domain
+ * (`extrapolate`; `cycle` for closed curves). The scene format checks the choice: a policy the
+ * curve has no value for (`segment` off the open cubic) comes back as its message.
+ */
+function timingControls(c, curve, edit) {
+  const speed = document.createElement('label');
+  speed.className = 'check';
+  const box = document.createElement('input');
+  box.type = 'checkbox';
+  box.checked = curve.parametrization === 'arclength';
+  box.setAttribute('aria-label', `Constant speed of curve ${c}`);
+  box.addEventListener('change', () => edit.field('parametrization', box.checked ? 'arclength' : null));
+  speed.append(box, ' constant speed');
+  const outside = document.createElement('label');
+  outside.className = 'row slider';
+  outside.title = 'what the curve is outside its domain: hold the end at rest, extend along the end geodesic, cycle a closed loop, refuse (error), or continue the end segment (the cubic, as scipy)';
+  const select = document.createElement('select');
+  select.setAttribute('aria-label', `Extrapolation of curve ${c}`);
+  const policies = ['hold', 'extend', ...(curve.closed ? ['cycle'] : []), 'error', 'segment'];
+  for (const p of policies) select.append(new Option(p, p));
+  select.value = curve.extrapolate ?? 'hold';
+  select.addEventListener('change', () => edit.field('extrapolate', select.value === 'hold' ? null : select.value));
+  outside.append('outside ', select);
+  return [speed, outside];
 }
 
 /** A vector (a velocity) as comma-separated numbers; empty removes it. */

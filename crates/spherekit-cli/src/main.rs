@@ -4,7 +4,7 @@
 //! `spherekit`: sample curves described by JSON scenes.
 //!
 //! ```text
-//! spherekit sample SCENE.json|- [--deriv] [--frame space|body] [--continuity] [--samples N]
+//! spherekit sample SCENE.json|- [--deriv] [--frame space|body] [--continuity] [--samples N | --at T,…]
 //! spherekit render SCENE.json|- -o OUT.png|OUT.svg [--format png|svg] [--size N]
 //! spherekit methods [--json]
 //! ```
@@ -20,7 +20,7 @@ const USAGE: &str = "\
 usage: spherekit <command> [options]
 
 commands:
-  sample SCENE.json [--deriv] [--frame space|body] [--continuity] [--samples N]
+  sample SCENE.json [--deriv] [--frame space|body] [--continuity] [--samples N | --at T,…]
       Sample the curve a scene describes and print one JSON object
       (`-` reads the scene from standard input).
       --deriv        also print velocity, acceleration (and angular velocity on S3)
@@ -29,7 +29,13 @@ commands:
       --continuity   also print the jumps of point, velocity and acceleration
                      at every joint (c0, c1, c2; g1 of the unit tangent) and
                      its class (C⁰, G¹, C¹, C², … Cⁿ)
-      --samples N    N uniform samples over the domain (overrides the scene)
+      --samples N    N uniform samples over the domain (overrides the scene);
+                     the domain is [0, L] for \"parametrization\": \"arclength\",
+                     so the samples are equally far apart along the curve
+      --at T,…       sample at these parameters instead (overrides the scene's
+                     samples and eval_at); outside the domain the curve's
+                     \"extrapolate\" policy applies, and a parameter that is not
+                     finite (nan, inf) is an error naming it
   render SCENE.json -o OUT.png|OUT.svg [--format png|svg] [--size N]
       Draw the scene (sphere, curves, plots, legend) into a PNG, or the same
       picture as SVG (vector strokes, text as <text>), N pixels wide (default
@@ -122,6 +128,7 @@ fn sample(args: &[String]) -> Result<(), Failure> {
     let mut path = None;
     let mut options = SampleOptions::default();
     let mut samples = None;
+    let mut at = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -144,14 +151,39 @@ fn sample(args: &[String]) -> Result<(), Failure> {
                     .map_err(|_| bad(format!("--samples: \"{v}\" is not a whole number")))?;
                 samples = Some(n);
             }
+            "--at" => {
+                let v = it
+                    .next()
+                    .ok_or_else(|| bad("--at needs parameters, such as --at 0,0.5,1"))?;
+                let ts = v
+                    .split(',')
+                    .map(|x| {
+                        x.trim()
+                            .parse::<f64>()
+                            .map_err(|_| bad(format!("--at: \"{x}\" is not a number")))
+                    })
+                    .collect::<Result<Vec<f64>, _>>()?;
+                at = Some(ts);
+            }
             s if s.starts_with("--") => return Err(bad(format!("unknown option {s}"))),
             s if path.is_none() => path = Some(s.to_owned()),
             s => return Err(bad(format!("unexpected argument \"{s}\""))),
         }
     }
     let path = path.ok_or_else(|| bad("sample: give a scene file, or - for standard input"))?;
+    if samples.is_some() && at.is_some() {
+        return Err(bad("give either --samples or --at, not both"));
+    }
     let text = read_scene(&path)?;
     let mut scene = Scene::from_json(&text).map_err(|e| bad(e.to_string()))?;
+    if let Some(ts) = at {
+        scene.set_parameters(ts).map_err(|e| {
+            bad(format!(
+                "--at: {}",
+                e.to_string().trim_start_matches("eval_at: ")
+            ))
+        })?;
+    }
     if let Some(n) = samples {
         scene.set_samples(n).map_err(|e| {
             bad(format!(

@@ -6,7 +6,7 @@
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use serde_json::{Map, Value, json};
-use spherekit::{Curve, Jet, S2Point, SnPoint, UnitQuat};
+use spherekit::{Curve, Extrapolate, Jet, S2Point, SnPoint, UnitQuat};
 use spherekit_scene::{Built, BuiltCurve, Scene, ScenePoint, continuity_json};
 
 use crate::convert::{Times, from_json, point_rows, rows, to_json, value_error};
@@ -213,9 +213,10 @@ pub(crate) fn put_jets<P: Flat>(
 /// A curve of any registered method on any sphere, evaluated from numpy arrays.
 ///
 /// `Curve(method, points, *, space=None, knots=None, closed=False, scalar_first=False,
-/// canonicalize=None, **params)` builds the curve a scene `{"space", "method", "points",
-/// "knots", "closed", "canonicalize", "params"}` describes (see `spherekit.methods()` for the
-/// methods and their parameters), with the CLI's validation and error messages.
+/// canonicalize=None, parametrization=None, extrapolate=None, **params)` builds the curve a
+/// scene `{"space", "method", "points", "knots", "closed", "canonicalize", "parametrization",
+/// "extrapolate", "params"}` describes (see `spherekit.methods()` for the methods and their
+/// parameters), with the CLI's validation and error messages.
 ///
 /// - `points`: an `(n, d)` array. The sphere is inferred from `d` (3: S2, 4: S3 quaternions,
 ///   otherwise S(d-1)) unless `space` ("S2", "S3", "S<m>") is given. Quaternions are
@@ -225,11 +226,14 @@ pub(crate) fn put_jets<P: Flat>(
 /// - `closed`: a closed loop (every method whose `methods()` entry has `closes`): the curve
 ///   returns to its first point, as smooth at the seam as at the other joints; `knots` then has
 ///   one entry per point and one more, the time of the return.
+/// - `parametrization="arclength"`: the same curve at unit speed over `[0, L]` (the rotation
+///   angle on S3); `extrapolate`: `"hold"` (default), `"extend"`, `"cycle"` (closed),
+///   `"error"` or `"segment"` (the open cubic), what the curve is outside `domain`.
 /// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`…).
 ///
 /// `curve(t)` gives the points at the parameters `t` (a number or a 1-D array), `curve(t, 1)`
-/// and `curve(t, 2)` the first and second derivatives (ambient vectors). Parameters outside
-/// `domain` are clamped to it (the library's domain policy: no extrapolation). NaN gives NaN.
+/// and `curve(t, 2)` the first and second derivatives (ambient vectors). Outside `domain` the
+/// `extrapolate` policy applies (by default the end point at rest); NaN gives NaN.
 ///
 /// ```python
 /// >>> import numpy as np, spherekit
@@ -245,6 +249,8 @@ pub(crate) fn put_jets<P: Flat>(
 #[pyclass(module = "spherekit._spherekit", name = "Curve", frozen)]
 pub(crate) struct PyCurve {
     built: BuiltCurve,
+    /// The one-curve scene, for checking parameters under `extrapolate="error"`.
+    scene: Scene,
     method: &'static str,
     space: String,
     width: usize,
@@ -286,6 +292,21 @@ impl PyCurve {
     ) -> PyResult<Bound<'py, PyAny>> {
         let times = Times::extract(t, "t")?;
         let ts = times.values();
+        if self.scene.curves[0].extrapolate == Extrapolate::Error {
+            // The scene format's check (NaN still gives NaN rows).
+            let mut scene = self.scene.clone();
+            let t0 = self.built.domain()[0];
+            let checked: Vec<f64> = ts
+                .iter()
+                .map(|&t| if t.is_nan() { t0 } else { t })
+                .collect();
+            if !checked.is_empty() {
+                scene
+                    .set_parameters(checked)
+                    .and_then(|()| scene.check_parameters(core::slice::from_ref(&self.built)))
+                    .map_err(|e| value_error(e.to_string()))?;
+            }
+        }
         let width = match what {
             What::AngularVelocity(_) | What::AngularAcceleration(_) => 3,
             _ => self.width,
@@ -329,7 +350,7 @@ impl PyCurve {
 #[pymethods]
 impl PyCurve {
     #[new]
-    #[pyo3(signature = (method, points, *, space=None, knots=None, closed=false, scalar_first=false, canonicalize=None, **params))]
+    #[pyo3(signature = (method, points, *, space=None, knots=None, closed=false, scalar_first=false, canonicalize=None, parametrization=None, extrapolate=None, **params))]
     #[expect(clippy::too_many_arguments, reason = "the Python signature")]
     fn new(
         py: Python<'_>,
@@ -340,6 +361,8 @@ impl PyCurve {
         closed: bool,
         scalar_first: bool,
         canonicalize: Option<bool>,
+        parametrization: Option<&str>,
+        extrapolate: Option<&str>,
         params: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
         let mut rows = point_rows(points, "points")?;
@@ -373,6 +396,12 @@ impl PyCurve {
         if let Some(c) = canonicalize {
             scene.insert("canonicalize".into(), json!(c));
         }
+        if let Some(p) = parametrization {
+            scene.insert("parametrization".into(), json!(p));
+        }
+        if let Some(e) = extrapolate {
+            scene.insert("extrapolate".into(), json!(e));
+        }
         if let Some(p) = params
             && !p.is_empty()
         {
@@ -388,6 +417,7 @@ impl PyCurve {
             built,
             method: scene.curves[0].method.id,
             space: scene.space.name(),
+            scene,
             width,
             scalar_first,
         })

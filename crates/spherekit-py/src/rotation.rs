@@ -11,15 +11,15 @@
 //! # Extrapolation
 //!
 //! scipy's `RotationSpline` evaluates its end segments' cubic polynomials outside the key
-//! times (its `PPoly` extrapolates). The core's curves clamp instead (their domain policy), so
-//! [`EndSegment`] evaluates the same cubic as [`CubicSpline`]'s first or last segment at a
-//! local parameter outside `[0, 1]`: `c(s) = Exp_p(v(s))`, `v(s) = a·s + b·s² + c·s³`, from the
-//! keys, times and key velocities the spline exposes (the formulas of the `cubic` module's
-//! documentation: `a = V₀h`, `b = 3r − 2V₀h − U₁h`, `c = −2r + V₀h + U₁h`, `U₁ = (dExp_r)⁻¹V₁`).
+//! times (its `PPoly` extrapolates): the core's [`Extrapolate::Segment`] on an open
+//! [`CubicSpline`] (a closed one repeats, [`Extrapolate::Cycle`]).
 
 use pyo3::prelude::*;
-use spherekit::glam::{DQuat, DVec4};
-use spherekit::{CubicEnd, CubicSpline, Curve, GeodesicSpline, Jet, Manifold, UnitQuat, unflip};
+use spherekit::glam::DQuat;
+use spherekit::{
+    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GeodesicSpline, Manifold, UnitQuat,
+    unflip,
+};
 
 use crate::convert::{Times, float_repr, numbers, point_rows, rows, value_error};
 use crate::curve::{What, evaluate, put_jets};
@@ -55,158 +55,11 @@ fn rate(v: Option<Vec<f64>>, name: &str) -> PyResult<Option<spherekit::glam::DVe
     }
 }
 
-/// The first or last segment of a [`CubicSpline`], evaluable at any local parameter.
-#[derive(Clone, Debug)]
-struct EndSegment {
-    p: DVec4,
-    a: DVec4,
-    b: DVec4,
-    c: DVec4,
-    t_start: f64,
-    inv_h: f64,
-}
-
-/// `(θ cos θ − sin θ)/θ²`, the derivative of `sin θ/θ`, with its series near 0.
-fn sinc_deriv(x: f64) -> f64 {
-    if x < 1e-2 {
-        let x2 = x * x;
-        x * (-1.0 / 3.0 + x2 * (1.0 / 30.0 - x2 / 840.0))
-    } else {
-        let (s, c) = x.sin_cos();
-        (x * c - s) / (x * x)
-    }
-}
-
-/// `sin θ/θ`, with its series near 0.
-fn sinc(x: f64) -> f64 {
-    if x < 1e-4 {
-        1.0 - x * x / 6.0
-    } else {
-        x.sin() / x
-    }
-}
-
-impl EndSegment {
-    /// Segment `i` of `spline` (open).
-    fn new(spline: &CubicSpline<UnitQuat>, i: usize) -> Self {
-        let keys = spline.points();
-        let knots = spline.knots();
-        let v = spline.key_velocities();
-        let (p0, p1) = (keys[i], keys[i + 1]);
-        let h = knots[i + 1] - knots[i];
-        let p = p0.to_vector();
-        let r = Manifold::log(&p0, &p1);
-        let theta = r.length();
-        // U₁ = (dExp_r)⁻¹ V₁: the component along e′ (the transported direction) maps back to
-        // e, the orthogonal part is divided by sinc θ.
-        let u = if theta > 1e-150 {
-            let e = r / theta;
-            let (sn, cs) = theta.sin_cos();
-            let e_end = e * cs - p * sn;
-            let par = v[i + 1].dot(e_end);
-            e * par + (v[i + 1] - e_end * par) / sinc(theta)
-        } else {
-            v[i + 1]
-        };
-        let vh = v[i] * h;
-        let uh = u * h;
-        Self {
-            p,
-            a: vh,
-            b: r * 3.0 - vh * 2.0 - uh,
-            c: r * -2.0 + vh + uh,
-            t_start: knots[i],
-            inv_h: 1.0 / h,
-        }
-    }
-
-    /// The jet at time `t` of this segment's cubic (the same formulas as the core's).
-    fn jet(&self, t: f64) -> Jet<UnitQuat> {
-        let s = (t - self.t_start) * self.inv_h;
-        let (a, b, c, p) = (self.a, self.b, self.c, self.p);
-        let v = ((c * s + b) * s + a) * s;
-        let w = ((c * (3.0 * s) + b * 2.0) * s + a) * self.inv_h;
-        let acc = (c * (6.0 * s) + b * 2.0) * (self.inv_h * self.inv_h);
-        let rho = v.length();
-        let (sn, cs) = rho.sin_cos();
-        let sc = sinc(rho);
-        let dsinc = sinc_deriv(rho);
-        let e = if rho > 1e-150 { v / rho } else { DVec4::ZERO };
-        let q = p * cs + v * sc;
-        let e_end = e * cs - p * sn;
-        let w_par = w.dot(e);
-        let w_perp = w - e * w_par;
-        let a_par = acc.dot(e);
-        let a_perp = acc - e * a_par;
-        let velocity = e_end * w_par + w_perp * sc;
-        let perp2 = w_perp.dot(w_perp);
-        let acceleration = e_end * a_par
-            + a_perp * sc
-            + q * (-w_par * w_par)
-            + p * (-perp2 * sc)
-            + e * (perp2 * dsinc)
-            + w_perp * (2.0 * dsinc * w_par);
-        let q = q.normalize();
-        Jet {
-            point: UnitQuat::new_unchecked(DQuat::from_xyzw(q.x, q.y, q.z, q.w)),
-            velocity,
-            acceleration,
-        }
-    }
-}
-
 /// The cubic spline of scipy's `RotationSpline` (and its natural, clamped and closed kin).
 #[pyclass(module = "spherekit._spherekit", name = "_CubicRotations", frozen)]
 pub(crate) struct PyCubicRotations {
-    spline: CubicSpline<UnitQuat>,
-    /// Open curves: the first and last segments, for extrapolation.
-    ends: Option<(EndSegment, EndSegment)>,
-}
-
-impl PyCubicRotations {
-    /// The row for `what` at `t`, where `t` is outside the domain of an open curve.
-    fn extrapolate(&self, t: f64, what: What, out: &mut Vec<f64>) {
-        let Some((first, last)) = &self.ends else {
-            return;
-        };
-        let segment = if t < self.spline.knots()[1] {
-            first
-        } else {
-            last
-        };
-        put_jets(&[segment.jet(t)], what, false, out);
-    }
-
-    fn values(&self, ts: &[f64], what: What) -> Vec<f64> {
-        let width = if what == What::Point { 4 } else { 3 };
-        let [t0, t1] = self.spline.domain();
-        let outside = |t: f64| t < t0 || t > t1;
-        if self.ends.is_none() && ts.iter().any(|&t| outside(t)) {
-            // Closed: periodic.
-            let period = t1 - t0;
-            let wrapped: Vec<f64> = ts
-                .iter()
-                .map(|&t| {
-                    if outside(t) {
-                        t0 + (t - t0).rem_euclid(period)
-                    } else {
-                        t
-                    }
-                })
-                .collect();
-            return evaluate(&self.spline, &wrapped, what, width, false);
-        }
-        let mut out = evaluate(&self.spline, ts, what, width, false);
-        let mut row = Vec::with_capacity(width);
-        for (k, &t) in ts.iter().enumerate() {
-            if outside(t) {
-                row.clear();
-                self.extrapolate(t, what, &mut row);
-                out[k * width..(k + 1) * width].copy_from_slice(&row);
-            }
-        }
-        out
-    }
+    /// The spline, continuing its end segments outside the key times (closed: periodic).
+    curve: Extrapolated<CubicSpline<UnitQuat>>,
 }
 
 /// `order` of scipy's `RotationSpline.__call__`: quaternions, body rates, body accelerations.
@@ -273,11 +126,14 @@ impl PyCubicRotations {
         let spline = py
             .detach(|| CubicSpline::try_new(keys, Some(times), end, closed))
             .map_err(|e| value_error(e.to_string()))?;
-        let ends = (!closed).then(|| {
-            let n = spline.points().len();
-            (EndSegment::new(&spline, 0), EndSegment::new(&spline, n - 2))
-        });
-        Ok(Self { spline, ends })
+        let policy = if closed {
+            Extrapolate::Cycle
+        } else {
+            Extrapolate::Segment
+        };
+        Ok(Self {
+            curve: Extrapolated::new(spline, policy),
+        })
     }
 
     /// Quaternions `[x, y, z, w]` (`order=0`), body angular rates (1) or accelerations (2).
@@ -291,7 +147,8 @@ impl PyCubicRotations {
         let what = what(order)?;
         let times = Times::extract(t, "times")?;
         let ts = times.values();
-        let data = py.detach(|| self.values(&ts, what));
+        let width = if what == What::Point { 4 } else { 3 };
+        let data = py.detach(|| evaluate(&self.curve, &ts, what, width, false));
         rows(
             py,
             data,
@@ -310,15 +167,19 @@ impl PyCubicRotations {
         order: i64,
     ) -> PyResult<Bound<'py, PyAny>> {
         let what = what(order)?;
-        let mut out = Vec::new();
-        self.extrapolate(t, what, &mut out);
-        rows(py, out, if what == What::Point { 4 } else { 3 }, true)
+        let width = if what == What::Point { 4 } else { 3 };
+        let mut out = Vec::with_capacity(width);
+        match self.curve.curve().continued_jet(t) {
+            Some(jet) => put_jets(&[jet], what, false, &mut out),
+            None => out.resize(width, f64::NAN),
+        }
+        rows(py, out, width, true)
     }
 
     /// Newton iterations of the construction and the final relative residual.
     #[getter]
     fn solve_info(&self) -> (usize, f64) {
-        let info = self.spline.solve_info();
+        let info = self.curve.curve().solve_info();
         (info.iterations, info.residual)
     }
 
@@ -326,7 +187,8 @@ impl PyCubicRotations {
     #[getter]
     fn keys<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let data: Vec<f64> = self
-            .spline
+            .curve
+            .curve()
             .points()
             .iter()
             .flat_map(|q| q.to_vector().to_array())

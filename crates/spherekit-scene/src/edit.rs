@@ -261,16 +261,25 @@ impl Document {
     }
 
     /// Replaces curve `curve`'s fields other than `points` by `fields` (`method`, `params`,
-    /// `knots`, `canonicalize`, `color`; absent ones are removed).
+    /// `knots`, `canonicalize`, `closed`, `parametrization`, `extrapolate`, `color`, `label`;
+    /// absent ones are removed).
     ///
     /// # Errors
     ///
     /// The CLI's message for a bad curve.
     pub fn set_curve(&mut self, curve: usize, fields: Map<String, Value>) -> Result<(), EditError> {
         let mut doc = self.doc.clone();
+        let listed = doc.contains_key("curves");
         let c = curve_doc_mut(&mut doc, curve)?;
         let points = c.remove("points");
-        c.clear();
+        if listed {
+            c.clear();
+        } else {
+            // A single curve's fields share the object with the scene's (`space`, `view`, …).
+            for k in CURVE_FIELDS {
+                c.remove(k);
+            }
+        }
         c.extend(fields);
         if let Some(p) = points {
             c.insert("points".into(), p);
@@ -278,8 +287,9 @@ impl Document {
         self.apply(doc)
     }
 
-    /// Gives curve `curve` another method: parameters the new method does not have go, and
-    /// knots go unless the new method takes as many for these points.
+    /// Gives curve `curve` another method: parameters the new method does not have go, knots
+    /// go unless the new method takes as many for these points, and `"extrapolate":
+    /// "segment"` goes unless the new method's curve has end segments to continue.
     ///
     /// # Errors
     ///
@@ -306,7 +316,18 @@ impl Document {
                 c.remove("params");
             }
         }
-        self.apply(doc)
+        let continued = c.get("extrapolate") == Some(&json!("segment"));
+        match self.apply(doc.clone()) {
+            // `"extrapolate": "segment"` goes when the new method's curve has no end segment
+            // to continue (as knots go when it takes other knots).
+            Err(e) if continued && names_field(&e, "extrapolate") => {
+                if let Ok(c) = curve_doc_mut(&mut doc, curve) {
+                    c.remove("extrapolate");
+                }
+                self.apply(doc)
+            }
+            result => result,
+        }
     }
 
     /// Adds a curve with `method` through the same points as curve 0 (a single-curve scene
@@ -408,6 +429,12 @@ impl Document {
             }
         }
         scene.view()?;
+        let all: Vec<&BuiltCurve> = fresh
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| c.as_ref().or_else(|| self.curves.get(i)))
+            .collect();
+        scene.check_parameters_of(&all)?;
         let built = fresh.iter().filter(|c| c.is_some()).count();
         let mut old: Vec<Option<BuiltCurve>> = core::mem::take(&mut self.curves)
             .into_iter()
@@ -426,6 +453,18 @@ impl Document {
         self.doc = doc;
         Ok(())
     }
+}
+
+/// Whether an edit failed on a curve's `field` (`extrapolate`, or `curves[i].extrapolate`).
+fn names_field(e: &EditError, name: &str) -> bool {
+    let mut e = match e {
+        EditError::Scene(e) => e,
+        _ => return false,
+    };
+    while let SceneError::InCurve { error, .. } = e {
+        e = error;
+    }
+    matches!(e, SceneError::Field { field, .. } if field == name)
 }
 
 /// Builds curve `i` of `scene` alone, with the error message [`Scene::build`] would give.
@@ -474,13 +513,15 @@ fn curve_doc_mut(
 }
 
 /// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 8] = [
+const CURVE_FIELDS: [&str; 10] = [
     "method",
     "points",
     "knots",
     "params",
     "canonicalize",
     "closed",
+    "parametrization",
+    "extrapolate",
     "color",
     "label",
 ];

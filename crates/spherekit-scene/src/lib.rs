@@ -13,6 +13,12 @@
 //!   "knots": [...],                     optional, strictly increasing (methods that take them)
 //!   "params": { ... },                  optional, method specific (Method::params)
 //!   "canonicalize": true | false,       optional; S3 only; default true (see spherekit::unflip)
+//!   "closed": true | false,             optional; methods that close (Method::closes)
+//!   "parametrization": "native" | "arclength",   optional, every method: arclength runs over
+//!                                       [0, L] at unit speed (spherekit::ArcLength)
+//!   "extrapolate": "hold" | "extend" | "cycle" | "error" | "segment",   optional, every method:
+//!                                       outside the domain (spherekit::Extrapolate); default
+//!                                       hold; cycle for closed curves, segment the open cubic's
 //!   "color": "#rrggbb",                 optional
 //!   "samples": 256,                     optional: uniform parameters over the domain, ends included
 //!   "eval_at": [t, ...],                optional: explicit parameters instead of "samples"
@@ -20,7 +26,8 @@
 //! ```
 //!
 //! Several curves on one sphere: `"curves": [{ "method", "points", "knots", "params",
-//! "canonicalize", "color" }, …]` in place of the single-curve fields. Unknown fields are
+//! "canonicalize", "closed", "parametrization", "extrapolate", "color", "label" }, …]` in place
+//! of the single-curve fields. Unknown fields are
 //! rejected, so a misspelt option is an error rather than silently ignored. Errors name the
 //! field (`points[3]: …`, `curves[1].params.order: …`); the library's own errors say what is
 //! wrong, this layer says where.
@@ -57,6 +64,7 @@ mod params;
 mod registry;
 mod scene;
 mod space;
+mod timing;
 mod view;
 
 pub use built::{
@@ -70,4 +78,5 @@ pub use scene::{
     CurveSpec, DEFAULT_SAMPLES, MAX_LABEL_CHARS, MAX_SAMPLES, SampleOptions, Sampling, Scene,
 };
 pub use space::{MAX_DIMENSION, Space};
+pub use timing::{EXTRAPOLATIONS, PARAMETRIZATIONS, Parametrization, extrapolate_name};
 pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, MAX_TITLE_CHARS, Plot, PlotTime, View};

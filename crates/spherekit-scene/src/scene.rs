@@ -5,7 +5,7 @@
 
 use serde::Deserialize;
 use serde_json::{Map, Value, json};
-use spherekit::{S2Point, SnPoint, SplineError, UnitQuat, unflip};
+use spherekit::{DomainError, Extrapolate, S2Point, SnPoint, SplineError, UnitQuat, unflip};
 
 use crate::built::{BuiltCurve, ScenePoint};
 use crate::error::{SceneError, field_error, in_curve};
@@ -13,6 +13,7 @@ use crate::json::json_error;
 use crate::params::Params;
 use crate::registry::{KnotRule, Method};
 use crate::space::Space;
+use crate::timing::{Parametrization, extrapolate_name, parse_extrapolate};
 use crate::view::View;
 
 /// The most evaluations a scene may ask for: `samples` (or the number of `eval_at` parameters)
@@ -39,6 +40,10 @@ struct RawScene {
     canonicalize: Option<bool>,
     #[serde(default)]
     closed: Option<bool>,
+    #[serde(default)]
+    parametrization: Option<String>,
+    #[serde(default)]
+    extrapolate: Option<String>,
     #[serde(default)]
     color: Option<String>,
     #[serde(default)]
@@ -70,6 +75,10 @@ struct RawCurve {
     #[serde(default)]
     closed: Option<bool>,
     #[serde(default)]
+    parametrization: Option<String>,
+    #[serde(default)]
+    extrapolate: Option<String>,
+    #[serde(default)]
     color: Option<String>,
     #[serde(default)]
     label: Option<String>,
@@ -80,7 +89,8 @@ struct RawCurve {
 pub enum Sampling {
     /// `n ≥ 2` uniform parameters over the domain, both ends included.
     Uniform(usize),
-    /// These parameters (clamped to the domain by the curve).
+    /// These parameters of the curve's domain (arc length for `"parametrization":
+    /// "arclength"`); outside it the curve's `extrapolate` policy applies.
     At(Vec<f64>),
 }
 
@@ -99,6 +109,10 @@ pub struct CurveSpec {
     pub canonicalize: bool,
     /// Whether the curve is a closed loop (after the last point it returns to the first).
     pub closed: bool,
+    /// The curve's parameter: the method's own or arc length (`"parametrization"`).
+    pub parametrization: Parametrization,
+    /// What the curve is outside its domain (`"extrapolate"`, default `"hold"`).
+    pub extrapolate: Extrapolate,
     /// The colour to draw it in, `[r, g, b]`, when the scene gives one (`"#rrggbb"`).
     pub color: Option<[u8; 3]>,
     /// The curve's name in the figure's legend, when the scene gives one (default: the method).
@@ -253,6 +267,8 @@ impl CurveSpec {
                 }
             }
         }
+        let parametrization = Parametrization::parse(raw.parametrization.as_deref())?;
+        let extrapolate = parse_extrapolate(raw.extrapolate.as_deref(), closed)?;
         Ok(Self {
             method,
             points: raw.points,
@@ -260,16 +276,20 @@ impl CurveSpec {
             params: raw.params.unwrap_or_default(),
             canonicalize: raw.canonicalize.unwrap_or(true),
             closed,
+            parametrization,
+            extrapolate,
             color: parse_color("color", raw.color)?,
             label: parse_label(raw.label)?,
         })
     }
 
-    /// Normalises the points and builds the curve.
+    /// Normalises the points and builds the curve, in its parametrisation and with its
+    /// extrapolation policy.
     ///
     /// # Errors
     ///
-    /// As [`Scene::build`], without the `curves[i]` prefix.
+    /// As [`Scene::build`], without the `curves[i]` prefix and without the check of the
+    /// sample parameters.
     pub fn build(&self, space: Space) -> Result<BuiltCurve, SceneError> {
         let points = match space {
             Space::S2 => Points::S2(points(&self.points)?),
@@ -293,7 +313,7 @@ impl CurveSpec {
             closed: self.closed,
             params: Params::new(self.method, &self.params),
         };
-        (self.method.build)(input).map_err(|e| match e {
+        let built = (self.method.build)(input).map_err(|e| match e {
             // q and −q are one rotation: say so, and how to have the keys flipped.
             SceneError::Spline(error @ SplineError::Antipodal { .. }) if s3 && !canonicalized => {
                 SceneError::Hinted {
@@ -302,7 +322,8 @@ impl CurveSpec {
                 }
             }
             e => e,
-        })
+        })?;
+        built.retime(self.parametrization, self.extrapolate)
     }
 }
 
@@ -386,12 +407,14 @@ impl Scene {
                     || raw.params.is_some()
                     || raw.canonicalize.is_some()
                     || raw.closed.is_some()
+                    || raw.parametrization.is_some()
+                    || raw.extrapolate.is_some()
                     || raw.color.is_some()
                     || raw.label.is_some()
                 {
                     return Err(field_error(
                         "curves",
-                        "with \"curves\", give knots, params, canonicalize, closed, color and label inside each curve",
+                        "with \"curves\", give knots, params, canonicalize, closed, parametrization, extrapolate, color and label inside each curve",
                     ));
                 }
                 if curves.is_empty() {
@@ -417,6 +440,8 @@ impl Scene {
                     params: raw.params,
                     canonicalize: raw.canonicalize,
                     closed: raw.closed,
+                    parametrization: raw.parametrization,
+                    extrapolate: raw.extrapolate,
                     color: raw.color,
                     label: raw.label,
                 };
@@ -497,22 +522,99 @@ impl Scene {
         Ok(())
     }
 
-    /// Normalises the points and builds every curve.
+    /// Replaces the sampling by these parameters (as `eval_at`; checked against the curves by
+    /// [`Scene::build`]).
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError::Field`] on `eval_at` for no parameters, or more than the curves together
+    /// may be evaluated at ([`MAX_SAMPLES`]).
+    pub fn set_parameters(&mut self, ts: Vec<f64>) -> Result<(), SceneError> {
+        if ts.is_empty() || ts.len() > MAX_SAMPLES {
+            return Err(field_error(
+                "eval_at",
+                format!("must have 1 to {MAX_SAMPLES} parameters, got {}", ts.len()),
+            ));
+        }
+        let sampling = Sampling::At(ts);
+        check_total(self.curves.len(), &sampling)?;
+        self.sampling = sampling;
+        Ok(())
+    }
+
+    /// Normalises the points and builds every curve, then checks the sample parameters
+    /// against them ([`Scene::check_parameters`]).
     ///
     /// # Errors
     ///
     /// [`SceneError::Spline`] when a construction rejects its input, [`SceneError::Field`] for
-    /// bad `params`; in a
-    /// multi-curve scene the message is prefixed with `curves[i]`.
+    /// bad `params`, `parametrization` or `extrapolate`; in a multi-curve scene the message is
+    /// prefixed with `curves[i]`. A bad sample parameter as [`Scene::check_parameters`].
     pub fn build(&self) -> Result<Vec<BuiltCurve>, SceneError> {
-        self.curves
+        let curves = self
+            .curves
             .iter()
             .enumerate()
             .map(|(i, c)| {
                 c.build(self.space)
                     .map_err(|e| in_curve(self.listed.then_some(i), e))
             })
-            .collect()
+            .collect::<Result<Vec<_>, _>>()?;
+        self.check_parameters(&curves)?;
+        Ok(curves)
+    }
+
+    /// Checks the explicit sample parameters (`eval_at`) against built curves: every one must
+    /// be a finite number, and have a value under each curve's `extrapolate` policy (inside the
+    /// domain under `"error"`; not so far out that the extension overflows).
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError::Field`] naming the parameter, `eval_at[k]`, and the curve.
+    pub fn check_parameters(&self, curves: &[BuiltCurve]) -> Result<(), SceneError> {
+        self.check_parameters_of(&curves.iter().collect::<Vec<_>>())
+    }
+
+    /// [`Scene::check_parameters`] over borrowed curves.
+    pub(crate) fn check_parameters_of(&self, curves: &[&BuiltCurve]) -> Result<(), SceneError> {
+        let Sampling::At(ts) = &self.sampling else {
+            return Ok(());
+        };
+        for (k, &t) in ts.iter().enumerate() {
+            if !t.is_finite() {
+                return Err(field_error(
+                    format!("eval_at[{k}]"),
+                    format!("{} is not a finite number", number(t)),
+                ));
+            }
+            for (i, (spec, curve)) in self.curves.iter().zip(curves).enumerate() {
+                let Err(e) = curve.check_parameter(spec.extrapolate, t) else {
+                    continue;
+                };
+                let whose = if self.listed {
+                    format!("curves[{i}]")
+                } else {
+                    "the curve".to_owned()
+                };
+                let policy = extrapolate_name(spec.extrapolate);
+                let t = number(t);
+                let message = match e {
+                    DomainError::Outside { domain, .. } => format!(
+                        "{t} is outside the domain [{}, {}] of {whose}, whose \"extrapolate\" is \"{policy}\"",
+                        number(domain[0]),
+                        number(domain[1])
+                    ),
+                    _ if spec.extrapolate == Extrapolate::Segment => format!(
+                        "{t} is so far outside the domain of {whose} that its continued end segment overflows"
+                    ),
+                    _ => format!(
+                        "{t} is so far outside the domain of {whose} that \"extrapolate\": \"{policy}\" has no value there"
+                    ),
+                };
+                return Err(field_error(format!("eval_at[{k}]"), message));
+            }
+        }
+        Ok(())
     }
 
     /// The parameters to sample a curve with the given domain at.
@@ -575,6 +677,16 @@ impl Scene {
             out.insert("curves".into(), Value::Array(list.collect()));
         }
         Value::Object(out)
+    }
+}
+
+/// A parameter as an error message shows it: plain digits for ordinary sizes, an exponent for
+/// very large and very small ones (`1e300`, not three hundred digits).
+fn number(t: f64) -> String {
+    if t != 0.0 && t.is_finite() && !(1e-5..1e16).contains(&t.abs()) {
+        format!("{t:e}")
+    } else {
+        format!("{t}")
     }
 }
 

@@ -7,7 +7,8 @@
 //! continuity classes.
 //!
 //! - Free functions evaluate a scene given as JSON text: [`methods`] (the registry, parameter
-//!   schemas included), [`validate`], [`sample`] (the `spherekit sample` output),
+//!   schemas included), [`validate`], [`sample`] (the `spherekit sample` output), [`sample_at`]
+//!   (the same at given parameters),
 //!   [`sample_array`] (one field as a `Float64Array`), [`continuity`] and [`render_rgba`].
 //! - [`Playground`] is the page's stateful handle on a [`Document`]: it rebuilds only the
 //!   curves an edit touched (a camera change only re-renders), and draws into a canvas.
@@ -186,6 +187,28 @@ pub fn validate(scene: &str) -> Result<(), JsError> {
 pub fn sample(scene: &str, deriv: bool, frame: Option<String>) -> Result<String, JsError> {
     let body = body_frame(frame.as_deref())?;
     let (scene, curves) = load(scene).map_err(js)?;
+    Ok(sampled(&scene, &curves, deriv, body))
+}
+
+/// Samples a scene at the parameters `ts` (a `Float64Array`) instead of its own `samples` or
+/// `eval_at`: what `spherekit sample --at` prints. Outside a curve's domain its
+/// `"extrapolate"` policy applies; a parameter that is NaN or infinite, or outside the domain
+/// of an `"error"` curve, is an error naming it (`eval_at[k]: …`).
+///
+/// # Errors
+///
+/// The CLI's message for a bad scene or parameter; a frame other than `"space"` or `"body"`.
+#[wasm_bindgen]
+pub fn sample_at(
+    scene: &str,
+    ts: &[f64],
+    deriv: bool,
+    frame: Option<String>,
+) -> Result<String, JsError> {
+    let body = body_frame(frame.as_deref())?;
+    let mut scene = Scene::from_json(scene).map_err(js)?;
+    scene.set_parameters(ts.to_vec()).map_err(js)?;
+    let curves = scene.build().map_err(js)?;
     Ok(sampled(&scene, &curves, deriv, body))
 }
 
@@ -507,7 +530,8 @@ impl Playground {
     }
 
     /// Replaces curve `curve`'s fields other than `points` by those of a JSON object
-    /// (`{ "method", "params", "knots", "canonicalize", "color" }`; absent ones are removed).
+    /// (`{ "method", "params", "knots", "canonicalize", "closed", "parametrization",
+    /// "extrapolate", "color", "label" }`; absent ones are removed).
     ///
     /// # Errors
     ///
@@ -846,6 +870,25 @@ impl Playground {
     pub fn sample(&self, deriv: bool, frame: Option<String>) -> Result<String, JsError> {
         let body = body_frame(frame.as_deref())?;
         Ok(sampled(self.doc.scene(), self.doc.curves(), deriv, body))
+    }
+
+    /// The scene's samples at the parameters `ts`, as [`sample_at`], from the curves already
+    /// built.
+    ///
+    /// # Errors
+    ///
+    /// As [`sample_at`].
+    pub fn sample_at(
+        &self,
+        ts: &[f64],
+        deriv: bool,
+        frame: Option<String>,
+    ) -> Result<String, JsError> {
+        let body = body_frame(frame.as_deref())?;
+        let mut scene = self.doc.scene().clone();
+        scene.set_parameters(ts.to_vec()).map_err(js)?;
+        scene.check_parameters(self.doc.curves()).map_err(js)?;
+        Ok(sampled(&scene, self.doc.curves(), deriv, body))
     }
 
     /// One field of curve `curve`'s samples, as [`sample_array`], from the curves already built.

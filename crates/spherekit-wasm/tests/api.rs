@@ -6,7 +6,7 @@
 #![cfg(target_arch = "wasm32")]
 
 use spherekit_wasm::{
-    Playground, continuity, methods, render_rgba, sample, sample_array, validate,
+    Playground, continuity, methods, render_rgba, sample, sample_array, sample_at, validate,
 };
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -412,4 +412,144 @@ fn view_options_fill_in_the_renderers_defaults() {
         chosen,
         serde_json::json!({"plot":"omega","legend":false,"axes":["z"],"frames":4})
     );
+}
+
+/// A scene of `method` on the first sphere it takes, with extra curve fields.
+fn timing_scene(m: &spherekit_scene::Method, extra: &str) -> String {
+    let s3 = m.spheres == spherekit_scene::Spheres::S3;
+    let points = if s3 {
+        "[[1,0,0,0],[0.95,0.3,0,0],[0.9,0.3,0.3,0],[0.85,0.3,0.3,0.3],[0.8,0,0.4,0.4]]"
+    } else {
+        "[[1,0,0],[0.8,0.6,0],[0.6,0.6,0.5],[0.3,0.6,0.7],[0,0.6,0.8]]"
+    };
+    format!(
+        r#"{{"space":"{}","method":"{}","points":{points}{extra}}}"#,
+        if s3 { "S3" } else { "S2" },
+        m.id
+    )
+}
+
+fn finite(v: &serde_json::Value) -> bool {
+    match v {
+        serde_json::Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
+        serde_json::Value::Array(a) => a.iter().all(finite),
+        serde_json::Value::Object(o) => o.values().all(finite),
+        _ => true,
+    }
+}
+
+#[wasm_bindgen_test]
+fn every_policy_on_every_method_at_the_probe_parameters() {
+    for m in spherekit_scene::METHODS {
+        let mut policies = vec!["hold", "extend", "error"];
+        if m.closes {
+            policies.push("cycle");
+        }
+        if m.id == "cubic" {
+            policies.push("segment");
+        }
+        for policy in policies {
+            let closed = if policy == "cycle" {
+                r#","closed":true"#
+            } else {
+                ""
+            };
+            let scene = timing_scene(m, &format!(r#","extrapolate":"{policy}"{closed}"#));
+            let [t0, t1] =
+                <[f64; 2]>::try_from(sample_array(&scene, 0, "domain").unwrap()).unwrap();
+            for t in [t0 - 1.0, t1 + 1.0, -1e300, 1e300] {
+                let out = sample_at(&scene, &[t], true, None);
+                let far = t.abs() == 1e300;
+                match (policy, out) {
+                    ("error", Err(e)) => {
+                        let e = message(e);
+                        assert!(
+                            e.starts_with("eval_at[0]: ") && e.contains("outside the domain"),
+                            "{}: {e}",
+                            m.id
+                        );
+                    }
+                    ("segment", Err(e)) if far => {
+                        assert!(message(e).contains("overflows"), "{}", m.id);
+                    }
+                    ("hold" | "extend" | "cycle" | "segment", Ok(out)) => {
+                        let out: serde_json::Value = serde_json::from_str(&out).unwrap();
+                        assert!(
+                            finite(&out["points"]) && finite(&out["velocity"]),
+                            "{} {policy} at {t}",
+                            m.id
+                        );
+                        if policy == "hold" {
+                            let v = &out["velocity"][0];
+                            assert!(
+                                v.as_array()
+                                    .unwrap()
+                                    .iter()
+                                    .all(|x| x.as_f64() == Some(0.0)),
+                                "{} at rest",
+                                m.id
+                            );
+                        }
+                    }
+                    (_, out) => panic!("{} {policy} at {t}: {:?}", m.id, out.map_err(message)),
+                }
+            }
+            let e = message(sample_at(&scene, &[t0, f64::NAN], false, None).unwrap_err());
+            assert_eq!(
+                e, "eval_at[1]: NaN is not a finite number",
+                "{} {policy}",
+                m.id
+            );
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+fn the_playground_carries_parametrization_and_extrapolate() {
+    let mut pg = Playground::new(S3).unwrap();
+    pg.set_curve(
+        0,
+        r#"{"method":"squad","parametrization":"arclength","extrapolate":"extend"}"#,
+    )
+    .map_err(message)
+    .unwrap();
+    let curve: serde_json::Value = serde_json::from_str(&pg.curve_json(0).unwrap()).unwrap();
+    assert_eq!(curve["parametrization"], "arclength", "written back");
+    assert_eq!(curve["extrapolate"], "extend", "written back");
+    let scene: serde_json::Value = serde_json::from_str(&pg.scene_json()).unwrap();
+    assert_eq!(scene["extrapolate"], "extend", "in the scene JSON");
+    // Unit angular speed over [0, L], and the extension past L.
+    let domain = pg.sample_array(0, "domain").unwrap();
+    assert_eq!(domain[0], 0.0, "arc length starts at 0");
+    let omega = pg.sample_array(0, "angular_velocity").unwrap();
+    for w in omega.chunks(3) {
+        let speed = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+        assert!((speed - 1.0).abs() < 1e-9, "|ω| = {speed}");
+    }
+    let out: serde_json::Value =
+        serde_json::from_str(&pg.sample_at(&[domain[1] + 1.0], true, None).unwrap()).unwrap();
+    let w = &out["angular_velocity"][0];
+    let speed = (0..3)
+        .map(|k| w[k].as_f64().unwrap().powi(2))
+        .sum::<f64>()
+        .sqrt();
+    assert!(
+        (speed - 1.0).abs() < 1e-9,
+        "extended at unit speed: {speed}"
+    );
+    assert!(
+        message(pg.sample_at(&[f64::INFINITY], false, None).unwrap_err())
+            == "eval_at[0]: inf is not a finite number",
+        "a typed error"
+    );
+    // A bad value is refused and names the field; the handle keeps the last good scene.
+    let e = message(
+        pg.set_curve(0, r#"{"method":"squad","extrapolate":"cycle"}"#)
+            .unwrap_err(),
+    );
+    assert!(
+        e.starts_with("extrapolate: \"cycle\" repeats a closed curve"),
+        "{e}"
+    );
+    assert!(pg.curve_json(0).unwrap().contains("arclength"), "unchanged");
 }

@@ -38,14 +38,13 @@ pub trait Ambient:
     /// The Euclidean length. Finite for every finite vector: when the sum of squares overflows
     /// (a coordinate above about 1e154, such as a second derivative over a tiny knot spacing),
     /// the coordinates are rescaled by the largest one first.
+    #[inline]
     fn length(&self) -> f64 {
         let d = self.dot(self);
         if d.is_finite() || !self.is_finite() {
             return d.sqrt();
         }
-        let v = self.to_vec();
-        let m = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-        m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
+        rescaled_length(&self.to_vec())
     }
 
     /// `true` when every coordinate is finite.
@@ -183,4 +182,14 @@ impl Ambient for VecN {
     fn is_finite(&self) -> bool {
         self.0.iter().all(|a| a.is_finite())
     }
+}
+
+/// The length of a finite vector whose sum of squares overflows: rescaled by its largest
+/// coordinate (the rare path of [`Ambient::length`], kept out of line so that the common one
+/// inlines).
+#[cold]
+#[inline(never)]
+fn rescaled_length(v: &[f64]) -> f64 {
+    let m = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
 }

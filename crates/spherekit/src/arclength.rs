@@ -46,6 +46,11 @@ const GL_W: [f64; NODES] = [
 /// Cells are halved at most this many times below a piece.
 const MAX_DEPTH: u32 = 50;
 
+/// A piece has at most about this many cells: past it, cells are accepted as they are (and
+/// counted in [`ArcLengthInfo::unresolved`]), so that a curve whose speed is rounding noise
+/// everywhere (keys 1e-9 apart, a near-antipodal step) cannot make the bisection exponential.
+const MAX_CELLS_PER_PIECE: usize = 2048;
+
 /// Cells at least this deep (narrower than 2⁻²⁰ of their piece) mark a place where the speed is
 /// not smooth at the scale of the piece: in practice a zero of the speed (a cusp, where `|c′|`
 /// has a kink) or a near-zero. They are reported as [`Stall`]s.
@@ -84,8 +89,8 @@ pub struct ArcLengthInfo {
     pub cells: usize,
     /// The number of evaluations of the curve's jet during construction.
     pub evaluations: usize,
-    /// Cells accepted at the subdivision limit without meeting the accuracy (zero for curves
-    /// whose speed is continuous on each piece).
+    /// Cells accepted at the subdivision limit (50 halvings, or about 2048 cells in a piece)
+    /// without meeting the accuracy (zero for curves whose speed is smooth on each piece).
     pub unresolved: usize,
 }
 
@@ -111,6 +116,8 @@ struct Cell {
     inverse: [f64; NODES],
     /// The inverse series is accurate enough to be the answer (checked at construction).
     inverse_exact: bool,
+    /// `2/(s1 − s0)` (0 for a cell of zero length), so that `solve` does not divide.
+    two_over_len: f64,
 }
 
 /// `(2k+1)/(k+1)` and `k/(k+1)` of the Legendre recurrence `P_{k+1} = ((2k+1)u·P_k − k·P_{k−1})/(k+1)`.
@@ -189,6 +196,7 @@ impl Cell {
     }
 
     /// The `u` with `s(u) = s0 + target`: Newton's method, safeguarded by bisection.
+    #[inline]
     fn solve(&self, target: f64) -> f64 {
         let len = self.s1 - self.s0;
         if target <= 0.0 {
@@ -197,7 +205,7 @@ impl Cell {
         if target >= len {
             return 1.0;
         }
-        let u = self.guess(2.0 * target / len - 1.0);
+        let u = self.guess(target * self.two_over_len - 1.0);
         if self.inverse_exact {
             return u;
         }
@@ -240,11 +248,17 @@ impl Cell {
     /// form in `inverse`).
     #[inline]
     fn guess(&self, y: f64) -> f64 {
-        let c = &self.inverse[..self.inverse_terms];
-        let mut u = c[c.len() - 1];
-        for &ck in c[..c.len() - 1].iter().rev() {
-            u = u * y + ck;
-        }
+        // Estrin's scheme on all ten coefficients (those past `inverse_terms` are zero): the
+        // pairs and the powers of y evaluate side by side, half the latency of Horner's rule.
+        let c = &self.inverse;
+        let y2 = y * y;
+        let y4 = y2 * y2;
+        let p01 = c[0] + c[1] * y;
+        let p23 = c[2] + c[3] * y;
+        let p45 = c[4] + c[5] * y;
+        let p67 = c[6] + c[7] * y;
+        let p89 = c[8] + c[9] * y;
+        let u = (p01 + p23 * y2) + (p45 + p67 * y2) * y4 + p89 * (y4 * y4);
         u.clamp(-1.0, 1.0)
     }
 
@@ -255,6 +269,7 @@ impl Cell {
         self.inverse_terms = 2;
         self.inverse_exact = false;
         let len = self.s1 - self.s0;
+        self.two_over_len = if len > 0.0 { 2.0 / len } else { 0.0 };
         if self.terms == 1 || len <= 0.0 {
             // Constant speed: u is linear in s.
             self.inverse_exact = true;
@@ -289,6 +304,7 @@ impl Cell {
     }
 
     /// The parameter at `u` (the ends exactly).
+    #[inline]
     fn t_at(&self, u: f64) -> f64 {
         if u <= -1.0 {
             self.a
@@ -327,15 +343,20 @@ impl Cell {
 /// when the interpolant matches the speed at the nodes of both halves to `accuracy / (t1 − t0)`,
 /// so that `s(t)` is within `accuracy` of the true arc length everywhere (as are the positions
 /// `γ(s)` along the curve). The table of cumulative lengths at the cell ends gives `s ↦ t` by a
-/// binary search and, on the cell, a fitted series of the inverse map; where that series is not
+/// lookup (one bin per cell over `[0, L]` narrows the search to the few cells the bin holds)
+/// and, on the cell, a fitted series of the inverse map; where that series is not
 /// within a quarter of the cell's share of the accuracy, Newton's method on the cell's
 /// polynomial, safeguarded by bisection, finishes the solve to rounding. So
 /// [`param_at`](Self::param_at) inverts [`arc_length_at`](Self::arc_length_at) to
 /// `accuracy / 4` or better (exactly, up to rounding, on pieces of constant speed). The cost is a
 /// few cells per piece (one for a piece of constant speed), so construction is `O(pieces)`
-/// evaluations of the curve (about 30 to 100 per piece), and evaluation is one jet of the curve
-/// plus a binary search and one or two polynomial evaluations. The velocity is exactly unit speed (`σ` uses the curve's exact speed at `t(s)`);
-/// the derivatives are those of the exact arc-length curve at the point `c(t(s))`.
+/// evaluations of the curve (about 30 to 100 per piece; at most about 2048 cells per piece, see
+/// [`ArcLengthInfo::unresolved`]), and evaluation is one jet of the curve plus the lookup, one or
+/// two polynomial evaluations and the chain rule (one square root, one division). Batches
+/// ([`Curve::jet_many`], [`Curve::eval_many`]) map the parameters first and then call the
+/// curve's own batch evaluation, which steps through its pieces. The velocity is exactly unit
+/// speed (`σ` uses the curve's exact speed at `t(s)`); the derivatives are those of the exact
+/// arc-length curve at the point `c(t(s))`.
 ///
 /// # Stalls
 ///
@@ -377,6 +398,10 @@ pub struct ArcLength<C: Curve> {
     live: Vec<usize>,
     live_s0: Vec<f64>,
     live_s1: Vec<f64>,
+    /// `bins[b]`: the last live cell starting at or before `b/bin_scale` (one bin per live
+    /// cell over `[0, L]`), so that finding the cell of `s` is a search among a few cells.
+    bins: Vec<u32>,
+    bin_scale: f64,
     joints: Vec<f64>,
     info: ArcLengthInfo,
     /// `NOISE·(t1 − t0)`.
@@ -396,6 +421,8 @@ struct Builder<'a, C: Curve> {
     minima: Vec<(f64, f64)>,
     evaluations: usize,
     unresolved: usize,
+    /// The index of the first cell of the piece being built.
+    piece_start: usize,
 }
 
 impl<C: Curve> Builder<'_, C> {
@@ -439,7 +466,10 @@ impl<C: Curve> Builder<'_, C> {
         let scale = sigma.iter().fold(0.0_f64, |m, &x| m.max(x));
         let tol = self.tol.max(64.0 * f64::EPSILON * scale);
         let mid = 0.5 * (a + b);
-        let splittable = depth < MAX_DEPTH && a < mid && mid < b;
+        let splittable = depth < MAX_DEPTH
+            && a < mid
+            && mid < b
+            && self.cells.len() - self.piece_start < MAX_CELLS_PER_PIECE;
         if splittable {
             let left = self.speeds(a, mid)?;
             let right = self.speeds(mid, b)?;
@@ -499,6 +529,7 @@ impl<C: Curve> Builder<'_, C> {
             inverse_terms: 2,
             inverse: [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
             inverse_exact: false,
+            two_over_len: 0.0,
         });
         self.depths.push(depth);
         // The smallest speed: at the nodes (sampled) or at the ends (interpolated; a zero of
@@ -560,6 +591,7 @@ impl<C: Curve> ArcLength<C> {
             minima: Vec::new(),
             evaluations: 0,
             unresolved: 0,
+            piece_start: 0,
         };
         let mut stalls = Vec::new();
         let mut joints = vec![0.0];
@@ -567,6 +599,7 @@ impl<C: Curve> ArcLength<C> {
         for w in curve.joints().windows(2) {
             let (a, b) = (w[0], w[1]);
             let first = builder.cells.len();
+            builder.piece_start = first;
             let sigma = builder.speeds(a, b)?;
             builder.refine(a, b, sigma, 0)?;
             let piece_len: f64 = builder.cells[first..].iter().map(|c| c.s1).sum();
@@ -634,8 +667,18 @@ impl<C: Curve> ArcLength<C> {
         let live: Vec<usize> = (0..cells.len())
             .filter(|&i| cells[i].s1 > cells[i].s0)
             .collect();
-        let live_s0 = live.iter().map(|&i| cells[i].s0).collect();
+        let live_s0: Vec<f64> = live.iter().map(|&i| cells[i].s0).collect();
         let live_s1 = live.iter().map(|&i| cells[i].s1).collect();
+        #[expect(clippy::cast_precision_loss, reason = "cell counts are small")]
+        let bin_scale = live.len() as f64 / s;
+        let bins = (0..live.len())
+            .map(|b| {
+                #[expect(clippy::cast_precision_loss, reason = "cell counts are small")]
+                let start = b as f64 / bin_scale;
+                let j = live_s0.partition_point(|&x| x <= start).saturating_sub(1);
+                u32::try_from(j).unwrap_or(u32::MAX)
+            })
+            .collect();
         let mut this = Self {
             curve,
             accuracy,
@@ -643,6 +686,8 @@ impl<C: Curve> ArcLength<C> {
             live,
             live_s0,
             live_s1,
+            bins,
+            bin_scale,
             joints,
             info: ArcLengthInfo::default(),
             noise: NOISE * (t1 - t0),
@@ -723,12 +768,35 @@ impl<C: Curve> ArcLength<C> {
 
     /// The cell and local parameter of `s` (clamped); at a cell boundary `side` chooses the cell
     /// that ends there (`Left`) or starts there (`Right`).
+    #[inline]
     fn locate(&self, s: f64, side: Side) -> (usize, f64) {
         let s = clamp_param(s, [0.0, self.length()]);
-        let last = self.live.len() - 1;
+        let n = self.live.len();
+        // The bin of `s` bounds the search: the last cell starting at or before `s` is in
+        // `[lo, hi)` (each end checked, so that rounding of the bin edges cannot matter). Live
+        // cells are consecutive, `live_s1[j] = live_s0[j + 1]`, both strictly increasing.
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "s ≥ 0; the cast saturates and the bin is clamped"
+        )]
+        let b = ((s * self.bin_scale) as usize).min(self.bins.len() - 1);
+        let mut lo = self.bins[b] as usize;
+        let mut hi = self.bins.get(b + 1).map_or(n, |&x| x as usize + 1).min(n);
+        if self.live_s0[lo] > s {
+            lo = 0;
+        }
+        if hi < n && self.live_s0[hi] <= s {
+            hi = n;
+        }
         let j = match side {
-            Side::Right => self.live_s0.partition_point(|&x| x <= s).saturating_sub(1),
-            Side::Left => self.live_s1.partition_point(|&x| x < s).min(last),
+            // The largest j with live_s0[j] ≤ s (live_s0[0] = 0 ≤ s).
+            Side::Right => lo + self.live_s0[lo..hi].partition_point(|&x| x <= s) - 1,
+            // The smallest j with live_s1[j] ≥ s (every j < lo − 1 has live_s1[j] < s).
+            Side::Left => {
+                let l = lo.saturating_sub(1);
+                (l + self.live_s1[l..hi].partition_point(|&x| x < s)).min(n - 1)
+            }
         };
         let cell = self.live[j];
         let c = &self.cells[cell];
@@ -752,9 +820,71 @@ impl<C: Curve> Curve for ArcLength<C> {
     }
 
     fn jet_at(&self, s: f64, side: Side) -> Jet<C::Point> {
+        let (t, inner) = self.curve_param(s, side);
+        reparametrise(self.curve.jet_at(t, inner), side, self.noise)
+    }
+
+    fn eval(&self, s: f64) -> C::Point {
+        match self.curve_param(s, Side::Right) {
+            (t, Side::Right) => self.curve.eval(t),
+            (t, Side::Left) => self.curve.jet_at(t, Side::Left).point,
+        }
+    }
+
+    /// The curve's parameters of a chunk of `ss` at a time, then the curve's own batch
+    /// evaluation (which steps through its pieces instead of searching for each sample), then
+    /// the chain rule: the same values as [`jet`](Curve::jet), bit for bit, and no allocation.
+    fn jet_many(&self, ss: &[f64], out: &mut [Jet<C::Point>]) {
+        crate::knots::check_batch(ss, out);
+        let mut ts = [0.0; BATCH];
+        let mut left = [false; BATCH];
+        for (ss, out) in ss.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
+            for (k, &s) in ss.iter().enumerate() {
+                let (t, inner) = self.curve_param(s, Side::Right);
+                ts[k] = t;
+                left[k] = inner == Side::Left;
+            }
+            self.curve.jet_many(&ts[..ss.len()], out);
+            for (k, o) in out.iter_mut().enumerate() {
+                if left[k] {
+                    *o = self.curve.jet_at(ts[k], Side::Left);
+                }
+                *o = reparametrise(o.clone(), Side::Right, self.noise);
+            }
+        }
+    }
+
+    /// As [`jet_many`](Self::jet_many), for points ([`eval`](Curve::eval), bit for bit).
+    fn eval_many(&self, ss: &[f64], out: &mut [C::Point]) {
+        crate::knots::check_batch(ss, out);
+        let mut ts = [0.0; BATCH];
+        let mut left = [false; BATCH];
+        for (ss, out) in ss.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
+            for (k, &s) in ss.iter().enumerate() {
+                let (t, inner) = self.curve_param(s, Side::Right);
+                ts[k] = t;
+                left[k] = inner == Side::Left;
+            }
+            self.curve.eval_many(&ts[..ss.len()], out);
+            for (k, o) in out.iter_mut().enumerate() {
+                if left[k] {
+                    *o = self.curve.jet_at(ts[k], Side::Left).point;
+                }
+            }
+        }
+    }
+}
+
+/// Samples per chunk of [`ArcLength`]'s batch evaluation (its parameters live on the stack).
+const BATCH: usize = 256;
+
+impl<C: Curve> ArcLength<C> {
+    /// The curve's parameter `t(s)` and the side of the curve's jet there: at a cell end the
+    /// limit from inside the cell (the ends may be joints).
+    #[inline]
+    fn curve_param(&self, s: f64, side: Side) -> (f64, Side) {
         let (cell, u) = self.locate(s, side);
         let t = self.cells[cell].t_at(u);
-        // At a cell end take the limit from inside the cell (the ends may be joints).
         let inner = if u >= 1.0 {
             Side::Left
         } else if u <= -1.0 {
@@ -762,7 +892,7 @@ impl<C: Curve> Curve for ArcLength<C> {
         } else {
             side
         };
-        reparametrise(self.curve.jet_at(t, inner), side, self.noise)
+        (t, inner)
     }
 }
 
@@ -777,18 +907,40 @@ fn reparametrise<P: Manifold>(jet: Jet<P>, side: Side, noise: f64) -> Jet<P> {
         velocity: v,
         acceleration: a,
     } = jet;
-    let vl = v.length();
-    let sigma = k * vl;
-    if sigma > 0.0 && vl > noise * a.length() {
-        let inv = 1.0 / sigma;
-        let velocity = v.clone() * inv;
-        let acceleration = (a.clone() - v * (velocity.dot(&a) * k / vl)) * (inv * inv);
-        if velocity.is_finite() && acceleration.is_finite() {
-            return Jet {
-                point,
-                velocity,
-                acceleration,
-            };
+    // While the squared norms are normal numbers: `γ′ = c′/σ` with `1/σ = |c′|/(k·|c′|²)` and
+    // `γ″ = (c″ − c′·(c′·c″)/|c′|²)/σ²`, one square root and one division side by side (the
+    // latency of this chain is most of the adapter's cost); from the lengths otherwise
+    // (overflow, underflow), as written in the type's documentation.
+    let (v2, a2, va) = (v.dot(&v), a.dot(&a), v.dot(&a));
+    if v2 >= f64::MIN_POSITIVE && v2.is_finite() && a2.is_finite() {
+        if v2 > noise * noise * a2 {
+            let r = 1.0 / v2;
+            let inv = r * v2.sqrt() * (1.0 / k);
+            let velocity = v.clone() * inv;
+            let acceleration = (a.clone() - v.clone() * (va * r)) * (r * (1.0 / (k * k)));
+            if velocity.is_finite() && acceleration.is_finite() {
+                return Jet {
+                    point,
+                    velocity,
+                    acceleration,
+                };
+            }
+        }
+    } else {
+        let vl = v.length();
+        let sigma = k * vl;
+        if sigma > 0.0 && vl > noise * a.length() {
+            let inv = 1.0 / sigma;
+            let velocity = v.clone() * inv;
+            let acceleration =
+                (a.clone() - v.clone() * (velocity.dot(&a) * (k * k * inv))) * (inv * inv);
+            if velocity.is_finite() && acceleration.is_finite() {
+                return Jet {
+                    point,
+                    velocity,
+                    acceleration,
+                };
+            }
         }
     }
     // A stall: the direction of the tangential acceleration, the one-sided limit of c′/|c′|.
@@ -867,6 +1019,7 @@ mod tests {
             inverse_terms: 2,
             inverse: [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
             inverse_exact: false,
+            two_over_len: 1.0 / coef[0],
         };
         let big_f = |u: f64| u + u * u / 2.0 + u.powi(3) / 3.0 + u.powi(4) / 4.0;
         for u in [-1.0, -0.3, 0.2, 0.9, 1.0] {

@@ -487,6 +487,40 @@ impl<P: Manifold> CubicSpline<P> {
     pub fn segment_count(&self) -> usize {
         self.segments.len()
     }
+
+    /// The jet at any `t` of the first segment's formula (for `t` before the second key time)
+    /// or the last segment's (otherwise), continued beyond the segment: the exponential of the
+    /// segment's cubic `vᵢ(s)` in the tangent space of its first key, at `s = (t − tᵢ)/hᵢ`
+    /// outside `[0, 1]` too. Inside those segments it is the curve's own jet (to rounding).
+    ///
+    /// This is how scipy's `RotationSpline` extrapolates (its `PPoly` continues the end
+    /// polynomials of the rotation vectors), and what [`Curve::jet_beyond`] gives outside the
+    /// domain of an open spline (see [`Extrapolate::Segment`](crate::Extrapolate::Segment)).
+    /// `None` for a NaN `t` and where the cubic or the jet overflows (far outside: the
+    /// tangent vector grows like `s³`).
+    #[must_use]
+    pub fn continued_jet(&self, t: f64) -> Option<Jet<P>> {
+        if t.is_nan() {
+            return None;
+        }
+        let knots = self.knots.as_slice();
+        let i = if t < knots[1] {
+            0
+        } else {
+            self.segments.len() - 1
+        };
+        let g = &self.segments[i];
+        let s = (t - knots[i]) * g.inv_h;
+        // The cubic, its derivative and its length must be finite for the exponential to be a
+        // point (checked before `jet_local`, which renormalises).
+        let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
+        let w = ((g.c.clone() * (3.0 * s) + g.b.clone() * 2.0) * s + g.a.clone()) * g.inv_h;
+        if !(v.length().is_finite() && w.length().is_finite() && (s * g.inv_h).is_finite()) {
+            return None;
+        }
+        let jet = self.jet_local(i, s);
+        (jet.velocity.is_finite() && jet.acceleration.is_finite()).then_some(jet)
+    }
 }
 
 impl<P: Manifold> Curve for CubicSpline<P> {
@@ -522,6 +556,17 @@ impl<P: Manifold> Curve for CubicSpline<P> {
     fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
         self.knots
             .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
+    }
+
+    /// Open splines: the end segments' cubics continued ([`CubicSpline::continued_jet`]); a
+    /// closed spline has no ends (`None`; it repeats under
+    /// [`Extrapolate::Cycle`](crate::Extrapolate::Cycle)).
+    fn jet_beyond(&self, t: f64) -> Option<Jet<P>> {
+        let [t0, t1] = self.domain();
+        if self.closed || !(t < t0 || t > t1) {
+            return None;
+        }
+        self.continued_jet(t)
     }
 }
 

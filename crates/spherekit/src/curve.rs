@@ -127,6 +127,97 @@ pub trait Curve: core::fmt::Debug {
             *o = self.jet(t);
         }
     }
+
+    /// The curve's own continuation at a parameter `t` outside its domain, where its
+    /// construction has one: the formula of the first piece (for `t < t0`) or the last piece
+    /// (for `t > t1`) evaluated beyond the piece. This is what
+    /// [`Extrapolate::Segment`](crate::Extrapolate::Segment) evaluates.
+    ///
+    /// `None` (the default) for a curve without such a continuation, at every `t`. A curve
+    /// with one gives `Some` at every finite `t` outside the domain except where the formula
+    /// overflows (far outside), and `None` inside the domain, for NaN and `±∞`.
+    ///
+    /// [`CubicSpline`](crate::CubicSpline) (open) continues its end segments' cubics in the
+    /// tangent space of their first keys, as scipy's `RotationSpline` does.
+    fn jet_beyond(&self, t: f64) -> Option<Jet<Self::Point>> {
+        let _ = t;
+        None
+    }
+}
+
+/// A borrowed curve is the curve (so that an adapter can wrap a curve it does not own).
+impl<C: Curve + ?Sized> Curve for &C {
+    type Point = C::Point;
+
+    fn domain(&self) -> [f64; 2] {
+        (**self).domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        (**self).joints()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point> {
+        (**self).jet_at(t, side)
+    }
+
+    fn jet(&self, t: f64) -> Jet<Self::Point> {
+        (**self).jet(t)
+    }
+
+    fn eval(&self, t: f64) -> Self::Point {
+        (**self).eval(t)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        (**self).eval_many(ts, out);
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        (**self).jet_many(ts, out);
+    }
+
+    fn jet_beyond(&self, t: f64) -> Option<Jet<Self::Point>> {
+        (**self).jet_beyond(t)
+    }
+}
+
+/// A boxed curve is the curve (so that adapters such as [`ArcLength`](crate::ArcLength) and
+/// [`Extrapolated`](crate::Extrapolated) can own a `Box<dyn Curve>`).
+impl<C: Curve + ?Sized> Curve for Box<C> {
+    type Point = C::Point;
+
+    fn domain(&self) -> [f64; 2] {
+        (**self).domain()
+    }
+
+    fn joints(&self) -> &[f64] {
+        (**self).joints()
+    }
+
+    fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point> {
+        (**self).jet_at(t, side)
+    }
+
+    fn jet(&self, t: f64) -> Jet<Self::Point> {
+        (**self).jet(t)
+    }
+
+    fn eval(&self, t: f64) -> Self::Point {
+        (**self).eval(t)
+    }
+
+    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
+        (**self).eval_many(ts, out);
+    }
+
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
+        (**self).jet_many(ts, out);
+    }
+
+    fn jet_beyond(&self, t: f64) -> Option<Jet<Self::Point>> {
+        (**self).jet_beyond(t)
+    }
 }
 
 /// Clamps `t` to `[t0, t1]`, mapping NaN to `t0` (see the domain policy of [`Curve`]); never

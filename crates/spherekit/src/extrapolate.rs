@@ -19,6 +19,7 @@ use crate::math;
 /// | `Hold` | the end point | zero | zero |
 /// | `Extend` | `exp_p(Δ·v)`: the geodesic from the end point `p` with the end velocity `v` | `v` transported along it (constant speed) | `−|v|²·c`: the normal part only |
 /// | `Cycle` | `c(t0 + (t − t0) mod (t1 − t0))` | of the curve there | of the curve there |
+/// | `Segment` | the end piece's own formula continued ([`Curve::jet_beyond`]) | of that formula | of that formula |
 /// | `Error` | — | — | — |
 ///
 /// `Extend` continues along the great circle at constant speed: the covariant (tangential)
@@ -31,6 +32,13 @@ use crate::math;
 /// continuous); at the parameters `t1 + k·(t1 − t0)` the right-sided jet is the curve's jet at
 /// `t0` and the left-sided one the curve's left jet at `t1`.
 ///
+/// `Segment` continues the first/last segment's polynomial in the tangent space, as scipy's
+/// `RotationSpline` does: for an open [`CubicSpline`](crate::CubicSpline) the exponential of
+/// the end segment's cubic at local parameters beyond `[0, 1]`
+/// ([`CubicSpline::continued_jet`](crate::CubicSpline::continued_jet)). A curve without such a
+/// continuation ([`Curve::jet_beyond`] is `None`) has no value outside its domain under it, nor
+/// has the cubic where its polynomial overflows: [`DomainError::Unbounded`].
+///
 /// `Error` makes [`Extrapolated::try_jet`] return [`DomainError::Outside`]; the infallible
 /// [`Curve`] methods clamp under it, as the curve itself does.
 ///
@@ -39,7 +47,7 @@ use crate::math;
 /// A NaN parameter is an error for [`Extrapolated::try_jet`] under every policy
 /// ([`DomainError::NotANumber`]); the [`Curve`] methods treat it as `t0` (the held start at
 /// rest under `Hold`, the curve's jet at `t0` otherwise). `±∞` holds the end under `Hold`. Under
-/// `Extend` and `Cycle`, `±∞` (and an `Extend` angle `|v|·Δ` that overflows) has no value:
+/// `Extend`, `Cycle` and `Segment`, `±∞` (and an `Extend` angle `|v|·Δ` that overflows) has no value:
 /// [`DomainError::Unbounded`] from `try_jet`, the curve's end jet from the [`Curve`] methods.
 /// Nothing panics, in debug builds either.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -51,6 +59,9 @@ pub enum Extrapolate {
     Extend,
     /// Repeat the curve periodically in `t` with period `t1 − t0`.
     Cycle,
+    /// Continue the first/last segment's own formula ([`Curve::jet_beyond`]): for the cubic
+    /// spline its polynomial in the tangent space, as scipy's `RotationSpline` does.
+    Segment,
     /// A parameter outside the domain is a [`DomainError`] (checked calls only).
     Error,
 }
@@ -121,8 +132,9 @@ impl<C: Curve> Extrapolated<C> {
     ///
     /// [`DomainError::NotANumber`] for NaN; [`DomainError::Outside`] outside the domain under
     /// [`Extrapolate::Error`]; [`DomainError::Unbounded`] for `±∞` under
-    /// [`Extend`](Extrapolate::Extend) and [`Cycle`](Extrapolate::Cycle), and for an `Extend`
-    /// angle that overflows.
+    /// [`Extend`](Extrapolate::Extend), [`Cycle`](Extrapolate::Cycle) and
+    /// [`Segment`](Extrapolate::Segment), for an `Extend` angle that overflows, and under
+    /// `Segment` where the curve has no continuation or it overflows.
     pub fn try_jet(&self, t: f64) -> Result<Jet<C::Point>, DomainError> {
         self.try_jet_at(t, Side::Right)
     }
@@ -152,7 +164,15 @@ impl<C: Curve> Extrapolated<C> {
                     Err(DomainError::Unbounded { t })
                 }
             }
+            Extrapolate::Segment => self.curve.jet_beyond(t).ok_or(DomainError::Unbounded { t }),
         }
+    }
+
+    /// Whether every parameter of `ts` is in the closed domain (then the batch calls are the
+    /// curve's own).
+    fn inside(&self, ts: &[f64]) -> bool {
+        let [t0, t1] = self.curve.domain();
+        ts.iter().all(|t| (t0..=t1).contains(t))
     }
 
     /// The point at `t` under the policy, or why there is none.
@@ -264,6 +284,36 @@ impl<C: Curve> Curve for Extrapolated<C> {
             self.curve.eval(t)
         } else {
             self.jet(t).point
+        }
+    }
+
+    /// The wrapped curve's continuation (so that wrapping twice changes nothing).
+    fn jet_beyond(&self, t: f64) -> Option<Jet<C::Point>> {
+        self.curve.jet_beyond(t)
+    }
+
+    /// The curve's own batch evaluation when every parameter is inside the domain, one by one
+    /// otherwise (the same values either way).
+    fn eval_many(&self, ts: &[f64], out: &mut [C::Point]) {
+        if self.inside(ts) {
+            self.curve.eval_many(ts, out);
+        } else {
+            crate::knots::check_batch(ts, out);
+            for (&t, o) in ts.iter().zip(out) {
+                *o = self.eval(t);
+            }
+        }
+    }
+
+    /// As [`eval_many`](Self::eval_many), for jets.
+    fn jet_many(&self, ts: &[f64], out: &mut [Jet<C::Point>]) {
+        if self.inside(ts) {
+            self.curve.jet_many(ts, out);
+        } else {
+            crate::knots::check_batch(ts, out);
+            for (&t, o) in ts.iter().zip(out) {
+                *o = self.jet(t);
+            }
         }
     }
 }

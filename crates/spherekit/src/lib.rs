@@ -84,7 +84,8 @@
 //!   `"canonicalize": false`.
 //! - **Domain.** Every curve has a parameter interval `[t0, t1]` ([`Curve::domain`]); outside it
 //!   the parameter is clamped, and NaN is treated as `t0` (see [`Curve`]). Other policies
-//!   (hold at rest, extend along the end geodesic, cycle, typed error) are [`Extrapolated`].
+//!   (hold at rest, extend along the end geodesic, cycle, typed error, or continue the end
+//!   segment's own formula as scipy's `RotationSpline` does) are [`Extrapolated`].
 //! - **Arc length** is great-circle arc length on S² and S^m and the **rotation angle** on S³
 //!   ([`Manifold::SPEED_SCALE`]: `|ω| = 2|q′|`); [`ArcLength`] reparametrises any curve by it.
 //! - **Antipodal points** have no unique geodesic. Constructions reject them with

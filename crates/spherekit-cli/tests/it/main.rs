@@ -15,3 +15,4 @@ mod cli;
 mod golden;
 mod robust_properties;
 mod robustness;
+mod timing;

@@ -13,7 +13,7 @@
 )]
 
 use serde_json::{Map, Value, json};
-use spherekit::{Ambient, Side};
+use spherekit::{Ambient, Extrapolate, Side};
 use spherekit_scene::{
     Built, BuiltCurve, METHODS, Method, ParamKind, SampleOptions, Sampling, Scene, ScenePoint,
     Space,
@@ -48,7 +48,11 @@ pub enum Outcome {
 }
 
 /// Checks every sample of one built curve; returns the first problem.
-fn check_built<P: ScenePoint>(scene: &Scene, b: &Built<P>) -> Result<(), String> {
+fn check_built<P: ScenePoint>(
+    scene: &Scene,
+    policy: Extrapolate,
+    b: &Built<P>,
+) -> Result<(), String> {
     let [t0, t1] = b.curve.domain();
     if !(t0.is_finite() && t1.is_finite() && t0 < t1) {
         return Err(format!("bad domain [{t0}, {t1}]"));
@@ -61,7 +65,9 @@ fn check_built<P: ScenePoint>(scene: &Scene, b: &Built<P>) -> Result<(), String>
         let h = 1e-9 * t.abs().max(1.0);
         ts.extend([t.next_down(), t.next_up(), t - h, t + h]);
     }
-    // The domain policy: outside the domain the jet is the one at the nearer end (clamping).
+    // The extrapolation policy: `hold` is the nearer end point at rest; under `error`, and at
+    // ±∞ where `extend`, `cycle` and `segment` have no value, the jet is the one at the nearer
+    // end (the curve's clamping); elsewhere the checks below (finite, unit) apply.
     for side in [Side::Left, Side::Right] {
         for (outside, end) in [
             (f64::NEG_INFINITY, t0),
@@ -71,13 +77,25 @@ fn check_built<P: ScenePoint>(scene: &Scene, b: &Built<P>) -> Result<(), String>
             (t1 + 1.0, t1),
             (f64::INFINITY, t1),
         ] {
-            let (a, e) = (b.curve.jet_at(outside, side), b.curve.jet_at(end, side));
-            let same = a.point.to_vector().to_vec() == e.point.to_vector().to_vec()
-                && a.velocity.to_vec() == e.velocity.to_vec()
-                && a.acceleration.to_vec() == e.acceleration.to_vec();
+            if (t0..=t1).contains(&outside) {
+                continue; // t1 + 1 rounds to t1 for t1 ≥ 2⁵³
+            }
+            let a = b.curve.jet_at(outside, side);
+            let same = if policy == Extrapolate::Hold {
+                a.point.to_vector().to_vec() == b.curve.eval(end).to_vector().to_vec()
+                    && a.velocity.to_vec().iter().all(|&x| x == 0.0)
+                    && a.acceleration.to_vec().iter().all(|&x| x == 0.0)
+            } else if policy == Extrapolate::Error || outside.is_infinite() {
+                let e = b.curve.jet_at(end, side);
+                a.point.to_vector().to_vec() == e.point.to_vector().to_vec()
+                    && a.velocity.to_vec() == e.velocity.to_vec()
+                    && a.acceleration.to_vec() == e.acceleration.to_vec()
+            } else {
+                true
+            };
             if !same {
                 return Err(format!(
-                    "not clamped: jet_at({outside}, {side:?}) differs from jet_at({end}, {side:?})"
+                    "extrapolate {policy:?}: jet_at({outside}, {side:?}) is not the policy's value (end {end})"
                 ));
             }
         }
@@ -155,11 +173,12 @@ pub fn check_scene_capped(
         Ok(c) => c,
         Err(e) => return one_line(e.to_string()),
     };
-    for c in &curves {
+    for (spec, c) in scene.curves.iter().zip(&curves) {
+        let policy = spec.extrapolate;
         match c {
-            BuiltCurve::S2(b) => check_built(&scene, b),
-            BuiltCurve::S3(b) => check_built(&scene, b),
-            BuiltCurve::Sn(b) => check_built(&scene, b),
+            BuiltCurve::S2(b) => check_built(&scene, policy, b),
+            BuiltCurve::S3(b) => check_built(&scene, policy, b),
+            BuiltCurve::Sn(b) => check_built(&scene, policy, b),
         }?;
     }
     let json = scene.sample_json_with(
@@ -348,6 +367,15 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
     }
     if !params.is_empty() {
         scene.insert("params".into(), Value::Object(params));
+    }
+    // The curve-level timing fields, sometimes (any policy: `cycle` on an open curve and
+    // `segment` off the cubic must be rejected naming the field).
+    if u.ratio(1, 4)? {
+        scene.insert("parametrization".into(), json!("arclength"));
+    }
+    if u.ratio(1, 3)? {
+        let policy = pick(u, &spherekit_scene::EXTRAPOLATIONS)?;
+        scene.insert("extrapolate".into(), json!(policy));
     }
     let m = u.int_in_range(1_usize..=6)?;
     let mut ts = Vec::with_capacity(m);

@@ -16,6 +16,7 @@ mod registry;
 mod scene_sample;
 #[path = "../support/cases.rs"]
 mod support_cases;
+mod timing;
 
 mod support {
     pub(crate) use super::support_cases as cases;

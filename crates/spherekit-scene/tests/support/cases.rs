@@ -64,6 +64,12 @@ pub(crate) fn scenes(n: usize) -> Vec<(String, Value)> {
             };
             let base = json!({ "space": space, "method": m.id, "points": points(space, count) });
             out.push((format!("{} {space}", m.id), base.clone()));
+            // The curve-level timing fields wrap every method's curve.
+            for (field, value) in [("parametrization", "arclength"), ("extrapolate", "extend")] {
+                let mut scene = base.clone();
+                scene[field] = json!(value);
+                out.push((format!("{} {space} {field}={value}", m.id), scene));
+            }
             for p in m.params {
                 if !p.spheres.contains(
                     Scene::from_json(&base.to_string())

@@ -295,3 +295,63 @@ fn non_finite_parameters_never_panic() {
         check(c.as_ref(), &bad);
     }
 }
+
+/// `Segment` continues an open cubic's end segments (scipy's `RotationSpline` extrapolation):
+/// smooth through the ends (the same polynomial), derivatives that match finite differences
+/// outside, a typed error far out, and no continuation for a closed cubic or another curve.
+#[test]
+fn segment_continues_the_open_cubic_end_segments() {
+    let mut rng = Rng::new(26);
+    let keys = rng.chain(6, 0.8);
+    let c = CubicSpline::try_new(keys, Some(rng.knots(5)), CubicEnd::Scipy, false).unwrap();
+    let e = Extrapolated::new(c.clone(), Extrapolate::Segment);
+    let [t0, t1] = c.domain();
+    // Inside the end segments the continued formula is the curve.
+    for t in [t0, t0 + 0.1 * (c.knots()[1] - t0), t1 - 1e-3, t1] {
+        let (a, b) = (c.continued_jet(t).unwrap(), c.jet_at(t, Side::Left));
+        assert!(a.point.dist(&b.point) < 1e-14, "point at {t}");
+        assert!(
+            (a.velocity - b.velocity).length() < 1e-12,
+            "velocity at {t}"
+        );
+        assert!(
+            (a.acceleration - b.acceleration).length() < 1e-10,
+            "acceleration at {t}"
+        );
+    }
+    // C² through both ends.
+    for (inside, outside) in [(t0, t0 - 1e-7), (t1, t1 + 1e-7)] {
+        let (a, b) = (c.jet_at(inside, Side::Right), e.jet(outside));
+        assert!(
+            (a.velocity - b.velocity).length() < 1e-5,
+            "velocity through {inside}"
+        );
+        assert!((a.acceleration - b.acceleration).length() < 1e-4);
+    }
+    // Finite differences outside.
+    for t in [t0 - 0.7, t1 + 0.4, t1 + 1.0] {
+        let h = 1e-6;
+        let (m, j, p) = (e.jet(t - h), e.jet(t), e.jet(t + h));
+        let v = (p.point.to_vector() - m.point.to_vector()) * (0.5 / h);
+        let a = (p.velocity - m.velocity) * (0.5 / h);
+        assert!((v - j.velocity).length() < 1e-7, "velocity at {t}");
+        assert!((a - j.acceleration).length() < 1e-6, "acceleration at {t}");
+        assert_eq!(e.try_jet(t).unwrap(), j);
+    }
+    for t in [-1e300, 1e300, f64::INFINITY] {
+        assert_eq!(e.try_jet(t).unwrap_err(), DomainError::Unbounded { t });
+        assert!(finite_jet(&e.jet(t)), "the clamped jet at {t}");
+    }
+    assert_eq!(e.try_jet(f64::NAN).unwrap_err(), DomainError::NotANumber);
+    assert!(c.continued_jet(f64::NAN).is_none());
+    // No continuation: a closed cubic, another curve.
+    let closed = CubicSpline::try_new(rng.chain(5, 0.8), None, CubicEnd::Natural, true).unwrap();
+    let [_, c1] = closed.domain();
+    assert!(closed.jet_beyond(c1 + 1.0).is_none());
+    let geodesic = GeodesicSpline::try_new(rng.chain(3, 0.8), None).unwrap();
+    let g = Extrapolated::new(geodesic, Extrapolate::Segment);
+    assert_eq!(
+        g.try_jet(3.0).unwrap_err(),
+        DomainError::Unbounded { t: 3.0 }
+    );
+}
