@@ -201,9 +201,6 @@ def cases():
             for policy in ("hold", "extend", "error", "segment"):
                 yield f"{pre}_extrapolate_{policy}_params_edge", scene(
                     space, method, pts, eval_at=EDGE_PARAMS, extrapolate=policy, **extra)
-            if method in CLOSES:
-                yield f"{pre}_extrapolate_cycle_closed_params_edge", scene(
-                    space, method, pts, eval_at=EDGE_PARAMS, extrapolate="cycle", closed=True)
             yield f"{pre}_arclength_params_edge", scene(
                 space, method, pts, eval_at=EDGE_PARAMS, parametrization="arclength", **extra)
             yield f"{pre}_arclength_extend_params_edge", scene(
@@ -239,6 +236,9 @@ def cases():
             yield pre, scene(space, method, loop, closed=True, samples=65)
             extra = {"knots": [3.0 * i / n for i in range(n + 1)]} if method in TAKES_KNOTS else {}
             yield f"{pre}_params_edge", scene(space, method, loop, closed=True, eval_at=EDGE_PARAMS, **extra)
+            # A loop repeats under "cycle" (the policy only closed curves take).
+            yield f"{pre}_extrapolate_cycle_params_edge", scene(
+                space, method, loop, closed=True, eval_at=EDGE_PARAMS, extrapolate="cycle", **extra)
             yield f"{pre}_minimum_points", scene(space, method, ring(space, 3), closed=True, samples=65)
             # The last point equal to the first (a zero-length closing step).
             yield f"{pre}_seam_identical", scene(space, method, loop + [loop[0]], closed=True, samples=65)

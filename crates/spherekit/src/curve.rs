@@ -157,6 +157,10 @@ impl<C: Curve + ?Sized> Curve for &C {
         (**self).joints()
     }
 
+    fn is_closed(&self) -> bool {
+        (**self).is_closed()
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point> {
         (**self).jet_at(t, side)
     }
@@ -193,6 +197,10 @@ impl<C: Curve + ?Sized> Curve for Box<C> {
 
     fn joints(&self) -> &[f64] {
         (**self).joints()
+    }
+
+    fn is_closed(&self) -> bool {
+        (**self).is_closed()
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point> {
