@@ -417,10 +417,18 @@ fn view_options_fill_in_the_renderers_defaults() {
 /// A scene of `method` on the first sphere it takes, with extra curve fields.
 fn timing_scene(m: &spherekit_scene::Method, extra: &str) -> String {
     let s3 = m.spheres == spherekit_scene::Spheres::S3;
-    let points = if s3 {
-        "[[1,0,0,0],[0.95,0.3,0,0],[0.9,0.3,0.3,0],[0.85,0.3,0.3,0.3],[0.8,0,0.4,0.4]]"
-    } else {
-        "[[1,0,0],[0.8,0.6,0],[0.6,0.6,0.5],[0.3,0.6,0.7],[0,0.6,0.8]]"
+    // A loop goes around (a closed spline through an open path's points may not exist).
+    let points = match (s3, extra.contains(r#""closed":true"#)) {
+        (true, false) => {
+            "[[1,0,0,0],[0.95,0.3,0,0],[0.9,0.3,0.3,0],[0.85,0.3,0.3,0.3],[0.8,0,0.4,0.4]]"
+        }
+        (false, false) => "[[1,0,0],[0.8,0.6,0],[0.6,0.6,0.5],[0.3,0.6,0.7],[0,0.6,0.8]]",
+        (true, true) => {
+            "[[1,0.4,0,0.1],[1,0.12,0.38,0],[1,-0.32,0.24,0.1],[1,-0.32,-0.24,0],[1,0.12,-0.38,0.1]]"
+        }
+        (false, true) => {
+            "[[1,0,1.1],[0.31,0.95,1.1],[-0.81,0.59,1.1],[-0.81,-0.59,1.1],[0.31,-0.95,1.1]]"
+        }
     };
     format!(
         r#"{{"space":"{}","method":"{}","points":{points}{extra}}}"#,

@@ -10,14 +10,20 @@ use spherekit_scene::{BuiltCurve, Document, METHODS, Method, Scene};
 
 use crate::support::cases;
 
-/// The single-curve scene of `m` on `space` with `n` points and extra fields.
+/// The single-curve scene of `m` on `space` with `n` points and extra fields (points around
+/// a loop when `extra` closes the curve).
 fn scene(m: &Method, space: &str, extra: &Value) -> Value {
     let n = if m.single_piece {
         4
     } else {
         5.max(m.min_points)
     };
-    let mut s = json!({ "space": space, "method": m.id, "points": cases::points(space, n) });
+    let points = if extra["closed"] == json!(true) {
+        cases::loop_points(space, n)
+    } else {
+        cases::points(space, n)
+    };
+    let mut s = json!({ "space": space, "method": m.id, "points": points });
     for (k, v) in extra.as_object().unwrap() {
         s[k] = v.clone();
     }
