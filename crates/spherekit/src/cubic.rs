@@ -87,7 +87,9 @@
 use glam::{DVec3, DVec4};
 
 use crate::ambient::Ambient;
-use crate::curve::{Curve, Jet, Side};
+#[cfg(doc)]
+use crate::curve::Curve;
+use crate::curve::{Jet, Side};
 use crate::error::{PointError, SolveError, SplineError};
 use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
@@ -523,50 +525,20 @@ impl<P: Manifold> CubicSpline<P> {
     }
 }
 
-impl<P: Manifold> Curve for CubicSpline<P> {
-    type Point = P;
+crate::curve::piecewise_curve! {
+    impl [P: Manifold] for CubicSpline<P> {
+        type Point = P;
 
-    fn domain(&self) -> [f64; 2] {
-        self.knots.domain()
-    }
-
-    fn joints(&self) -> &[f64] {
-        self.knots.as_slice()
-    }
-
-    fn is_closed(&self) -> bool {
-        self.closed
-    }
-
-    fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
-        let (i, s) = self.knots.locate(t, side);
-        self.jet_local(i, s)
-    }
-
-    fn eval(&self, t: f64) -> P {
-        let (i, s) = self.knots.locate(t, Side::Right);
-        self.eval_local(i, s)
-    }
-
-    fn eval_many(&self, ts: &[f64], out: &mut [Self::Point]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.eval_local(i, s));
-    }
-
-    fn jet_many(&self, ts: &[f64], out: &mut [Jet<Self::Point>]) {
-        self.knots
-            .map_into(ts, Side::Right, out, |i, s| self.jet_local(i, s));
-    }
-
-    /// Open splines: the end segments' cubics continued ([`CubicSpline::continued_jet`]); a
-    /// closed spline has no ends (`None`; it repeats under
-    /// [`Extrapolate::Cycle`](crate::Extrapolate::Cycle)).
-    fn jet_beyond(&self, t: f64) -> Option<Jet<P>> {
-        let [t0, t1] = self.domain();
-        if self.closed || !(t < t0 || t > t1) {
-            return None;
+        /// Open splines: the end segments' cubics continued ([`CubicSpline::continued_jet`]); a
+        /// closed spline has no ends (`None`; it repeats under
+        /// [`Extrapolate::Cycle`](crate::Extrapolate::Cycle)).
+        fn jet_beyond(&self, t: f64) -> Option<Jet<P>> {
+            let [t0, t1] = self.domain();
+            if self.closed || !(t < t0 || t > t1) {
+                return None;
+            }
+            self.continued_jet(t)
         }
-        self.continued_jet(t)
     }
 }
 
