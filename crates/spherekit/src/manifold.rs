@@ -140,6 +140,14 @@ pub trait Manifold: Clone + Debug + PartialEq {
 /// The angle θ ∈ [0, π) from `p` to `q` and the unit tangent `e` at `p` with
 /// `q = cos θ·p + sin θ·e` (`e = 0` when θ = 0). `None` when antipodal.
 pub(crate) fn geodesic_frame<V: Ambient>(p: &V, q: &V) -> Option<(f64, V)> {
+    geodesic_frame_sin_cos(p, q).map(|(theta, e, _)| (theta, e))
+}
+
+/// [`geodesic_frame`] with `(sin θ, cos θ)`, formed from the same two lengths instead of a
+/// trigonometric call: with `d = |q − p| = 2 sin(θ/2)` and `s = |q + p| = 2 cos(θ/2)`,
+/// `sin θ = 2ds/(d² + s²)` and `cos θ = (s² − d²)/(d² + s²)` (the denominator, 4 for unit
+/// vectors, absorbs their rounding).
+pub(crate) fn geodesic_frame_sin_cos<V: Ambient>(p: &V, q: &V) -> Option<(f64, V, (f64, f64))> {
     let diff = q.clone() - p.clone();
     let sum = q.clone() + p.clone();
     let (d, s) = (diff.length(), sum.length());
@@ -158,9 +166,11 @@ pub(crate) fn geodesic_frame<V: Ambient>(p: &V, q: &V) -> Option<(f64, V)> {
     let w = w.clone() - p.clone() * p.dot(&w);
     let wl = w.length();
     if wl == 0.0 {
-        return Some((0.0, p.zeros_like()));
+        return Some((0.0, p.zeros_like(), (0.0, 1.0)));
     }
-    Some((theta, w * (1.0 / wl)))
+    let inv = 1.0 / (d * d + s * s);
+    let sin_cos = (2.0 * d * s * inv, (s * s - d * d) * inv);
+    Some((theta, w * (1.0 / wl), sin_cos))
 }
 
 /// Scales a non-zero finite vector to unit length, guarding against overflow and underflow.
