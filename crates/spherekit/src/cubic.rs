@@ -393,9 +393,7 @@ impl<P: Manifold> CubicSpline<P> {
             )
         } else {
             match m {
-                1 => FixedSolver::<1>::new(&geo).solve(),
-                2 => FixedSolver::<2>::new(&geo).solve(),
-                3 => FixedSolver::<3>::new(&geo).solve(),
+                1..=3 => FixedSolver::<3>::new(&geo).solve(),
                 _ => geo.solve(Dynamic(m)),
             }?
         };
@@ -781,19 +779,12 @@ struct Frames {
     data: Vec<f64>,
 }
 
-/// Calls `$body` with `$d` bound to the dimension `$r` as a [`Dim`]: a constant for 2 to 4
-/// (S¹ to S³, so that the short loops over coordinates are unrolled), [`Dynamic`] otherwise.
+/// Calls `$body` with `$d` bound to the dimension `$r` as a [`Dim`]: a constant for 4 (the
+/// span of keys on S³, so that the short loops over coordinates are unrolled), [`Dynamic`]
+/// otherwise.
 macro_rules! with_dim {
     ($r:expr, |$d:ident| $body:expr) => {
         match $r {
-            2 => {
-                let $d = Const::<2>;
-                $body
-            }
-            3 => {
-                let $d = Const::<3>;
-                $body
-            }
             4 => {
                 let $d = Const::<4>;
                 $body
@@ -1758,14 +1749,25 @@ struct Singular;
     reason = "element loops over the fixed-size blocks, indexed like the formulas"
 )]
 impl<'g, const M: usize> FixedSolver<'g, M> {
+    /// The solver for `g`, of tangent dimension `g.m ≤ M`: a smaller dimension is padded with
+    /// zero coordinates (zero directions, fixed velocities and unknowns, an identity holonomy),
+    /// on which the equations decouple into `σ·0 = 0`; the padded unknowns stay exactly 0.
     fn new(g: &'g Geometry) -> Self {
-        let arr = |s: &[f64]| -> Vf<M> { core::array::from_fn(|a| s[a]) };
-        let e = g.ehat.chunks_exact(M).map(arr).collect();
+        let m = g.m;
+        debug_assert!(m <= M, "tangent dimension {m} above {M}");
+        let arr = |s: &[f64]| -> Vf<M> { vf(|a| if a < m { s[a] } else { 0.0 }) };
+        let e = g.ehat.chunks_exact(m).map(arr).collect();
         let mut hol = [[0.0; M]; M];
         if g.closed {
             for (a, row) in hol.iter_mut().enumerate() {
                 for (b, v) in row.iter_mut().enumerate() {
-                    *v = g.hol[a * M + b];
+                    *v = if a < m && b < m {
+                        g.hol[a * m + b]
+                    } else if a == b {
+                        1.0
+                    } else {
+                        0.0
+                    };
                 }
             }
         }
@@ -1945,15 +1947,30 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         } else {
             [0.0; M]
         };
-        self.sweep_row::<FACTOR>(0, true, false, x, z, &mut w_prev, &mut worst2)?;
+        self.edge_row::<FACTOR>(0, true, x, z, &mut w_prev, &mut worst2)?;
         for k in 1..n - 1 {
             self.sweep_row::<FACTOR>(k, false, false, x, z, &mut w_prev, &mut worst2)?;
         }
-        self.sweep_row::<FACTOR>(n - 1, false, true, x, z, &mut w_prev, &mut worst2)?;
+        self.edge_row::<FACTOR>(n - 1, false, x, z, &mut w_prev, &mut worst2)?;
         if FACTOR && g.closed {
             self.finish_border()?;
         }
         Ok(worst2.sqrt())
+    }
+
+    /// The first or last row: [`sweep_row`](Self::sweep_row) out of line (the interior rows
+    /// are inlined into the sweep's loop, specialised for their position).
+    #[inline(never)]
+    fn edge_row<const FACTOR: bool>(
+        &mut self,
+        k: usize,
+        first: bool,
+        x: &[Vf<M>],
+        z: &mut [Vf<M>],
+        w_prev: &mut Vf<M>,
+        worst2: &mut f64,
+    ) -> Result<(), Singular> {
+        self.sweep_row::<FACTOR>(k, first, !first, x, z, w_prev, worst2)
     }
 
     #[inline(always)]
@@ -2294,7 +2311,10 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             residual = new;
         }
         info.residual = residual;
-        let flat: Vec<f64> = x.iter().flatten().copied().collect();
+        let flat: Vec<f64> = x
+            .iter()
+            .flat_map(|v| v[..self.g.m].iter().copied())
+            .collect();
         if residual.is_nan() || residual > MAX_RESIDUAL || flat.iter().any(|v| !v.is_finite()) {
             return Err(fail(info));
         }
