@@ -337,24 +337,18 @@ impl<P: Manifold> CubicSpline<P> {
             coords(e, &mut es);
         }
         let m = r - 1;
-        let frames = Frames::new(&xs, &es, &sin_cos, r, closed);
+        let (frames, ehat) = Frames::new(&xs, &es, &sin_cos, r, closed);
         let mut geo = Geometry {
             n,
             m,
             closed,
-            seg: Vec::with_capacity(nseg),
-            ehat: Vec::with_capacity(nseg * m),
+            seg: (0..nseg)
+                .map(|i| SegConst::new(thetas[i], knots.width(i), sin_cos[i]))
+                .collect(),
+            ehat,
             hol: Vec::new(),
             fixed: None,
         };
-        for i in 0..nseg {
-            geo.seg
-                .push(SegConst::new(thetas[i], knots.width(i), sin_cos[i]));
-            for a in 0..m {
-                geo.ehat
-                    .push(dot(frames.vector(i, a), &es[i * r..(i + 1) * r]));
-            }
-        }
         if closed && m > 0 {
             geo.hol = frames.holonomy();
         }
@@ -798,12 +792,26 @@ macro_rules! with_dim {
 }
 
 impl Frames {
-    fn new(xs: &[f64], es: &[f64], sin_cos: &[(f64, f64)], r: usize, closed: bool) -> Self {
+    /// The frames, and the frame coordinates `ê` of each segment's direction (`nseg × (r − 1)`,
+    /// the components along `e` that the transport rotates).
+    fn new(
+        xs: &[f64],
+        es: &[f64],
+        sin_cos: &[(f64, f64)],
+        r: usize,
+        closed: bool,
+    ) -> (Self, Vec<f64>) {
         with_dim!(r, |d| Self::build(d, xs, es, sin_cos, closed))
     }
 
     #[inline(always)]
-    fn build<D: Dim>(d: D, xs: &[f64], es: &[f64], sin_cos: &[(f64, f64)], closed: bool) -> Self {
+    fn build<D: Dim>(
+        d: D,
+        xs: &[f64],
+        es: &[f64],
+        sin_cos: &[(f64, f64)],
+        closed: bool,
+    ) -> (Self, Vec<f64>) {
         let r = d.get();
         let m = r - 1;
         let n = xs.len() / r;
@@ -823,6 +831,7 @@ impl Frames {
             }));
         }
         data.resize(count * m * r, 0.0);
+        let mut ehat = Vec::with_capacity((count - 1) * m);
         let mut e_end = vec![0.0; r];
         for k in 0..count - 1 {
             let (x, e) = (&xs[k * r..(k + 1) * r], &es[k * r..(k + 1) * r]);
@@ -838,6 +847,7 @@ impl Frames {
             let cur = &done[k * m * r..];
             for (f, g) in cur.chunks_exact(r).zip(rest[..m * r].chunks_exact_mut(r)) {
                 let fe = dot(f, e);
+                ehat.push(fe);
                 for ((gj, fj), dj) in g.iter_mut().zip(f).zip(&e_end) {
                     *gj = fj + fe * dj;
                 }
@@ -847,7 +857,7 @@ impl Frames {
                 }
             }
         }
-        Self { r, data }
+        (Self { r, data }, ehat)
     }
 
     /// Vector `a` of frame `k`.
