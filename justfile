@@ -106,8 +106,15 @@ fuzz seconds="600" target="all":
 
 # ---- web: wasm bindings, playground, docs widget -------------------------------------------
 
-# Build the wasm package into web/pkg (installs wasm-pack, wasm-bindgen, wasm-opt when missing)
+# Build the wasm package into web/pkg (installs wasm-pack, wasm-bindgen, wasm-opt when missing).
+# Two size flags for this build only (44 KB of the .wasm, BENCHMARKS.md section 6), which stable
+# rustc accepts with RUSTC_BOOTSTRAP: `-Z location-detail=none` drops the file/line/column of
+# panic locations, `-Z fmt-debug=shallow` makes derived `Debug` print the type or variant name
+# alone (hand-written `Debug`, such as a string's quoting in error messages, is unchanged).
+# Neither changes a number or a message of a valid or rejected scene, only what the console
+# shows for a panic. The variable replaces .cargo/config.toml's flags, hence simd128 again.
 web:
+    RUSTC_BOOTSTRAP=1 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128 -Z location-detail=none -Z fmt-debug=shallow" \
     CARGO_PROFILE_RELEASE_OPT_LEVEL=z CARGO_PROFILE_RELEASE_LTO=true CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1 \
     CARGO_PROFILE_RELEASE_PANIC=abort bash scripts/setup-web.sh wasm-pack build crates/spherekit-wasm --release --target web --out-dir ../../web/pkg --no-typescript --no-pack
 

@@ -393,26 +393,16 @@ impl Cell {
 pub struct ArcLength<C: Curve> {
     curve: C,
     accuracy: f64,
-    cells: Vec<Cell>,
-    /// Indices of the cells of positive length, and their `s0` and `s1`.
-    live: Vec<usize>,
-    live_s0: Vec<f64>,
-    live_s1: Vec<f64>,
-    /// `bins[b]`: the last live cell starting at or before `b/bin_scale` (one bin per live
-    /// cell over `[0, L]`), so that finding the cell of `s` is a search among a few cells.
-    bins: Vec<u32>,
-    bin_scale: f64,
-    joints: Vec<f64>,
-    info: ArcLengthInfo,
-    /// `NOISE·(t1 − t0)`.
-    noise: f64,
-    /// `L`.
-    length: f64,
+    table: Table,
 }
 
-/// Builds the cells of one piece.
-struct Builder<'a, C: Curve> {
-    curve: &'a C,
+/// `SPEED_SCALE·|c′(t)|` from the given side: what the table is built from.
+type Speed<'a> = dyn Fn(f64, Side) -> f64 + 'a;
+
+/// Builds the cells of one piece. Not generic over the curve (the speed is a `&dyn Fn`): one
+/// copy of the construction serves every curve and point type.
+struct Builder<'a> {
+    speed: &'a Speed<'a>,
     /// The pointwise speed tolerance `accuracy / (t1 − t0)`.
     tol: f64,
     cells: Vec<Cell>,
@@ -425,7 +415,7 @@ struct Builder<'a, C: Curve> {
     piece_start: usize,
 }
 
-impl<C: Curve> Builder<'_, C> {
+impl Builder<'_> {
     /// `SPEED_SCALE·|c′|` at the nodes of `[a, b]` (left-sided on the right half, so that a node
     /// rounded onto the end stays on the piece).
     fn speeds(&mut self, a: f64, b: f64) -> Result<[f64; NODES], ArcLengthError> {
@@ -434,7 +424,7 @@ impl<C: Curve> Builder<'_, C> {
         for (o, &x) in out.iter_mut().zip(&GL_X) {
             let t = (mid + half * x).clamp(a, b);
             let side = if x > 0.0 { Side::Left } else { Side::Right };
-            let v = self.curve.jet_at(t, side).velocity.length() * C::Point::SPEED_SCALE;
+            let v = (self.speed)(t, side);
             self.evaluations += 1;
             if !v.is_finite() {
                 return Err(ArcLengthError::NonFiniteSpeed { t });
@@ -578,13 +568,53 @@ impl<C: Curve> ArcLength<C> {
     /// [`ArcLengthError::ZeroLength`] for a curve of length at most `accuracy / 1024`;
     /// [`ArcLengthError::NonFiniteSpeed`] if the curve's velocity is not finite somewhere.
     pub fn try_with_accuracy(curve: C, accuracy: f64) -> Result<Self, ArcLengthError> {
+        let speed =
+            |t: f64, side: Side| curve.jet_at(t, side).velocity.length() * C::Point::SPEED_SCALE;
+        let table = Table::build(curve.domain(), curve.joints(), accuracy, &speed)?;
+        Ok(Self {
+            curve,
+            accuracy,
+            table,
+        })
+    }
+}
+
+/// The table of an [`ArcLength`]: everything but the curve, built without knowing its type.
+#[derive(Clone, Debug)]
+struct Table {
+    cells: Vec<Cell>,
+    /// Indices of the cells of positive length, and their `s0` and `s1`.
+    live: Vec<usize>,
+    live_s0: Vec<f64>,
+    live_s1: Vec<f64>,
+    /// `bins[b]`: the last live cell starting at or before `b/bin_scale` (one bin per live
+    /// cell over `[0, L]`), so that finding the cell of `s` is a search among a few cells.
+    bins: Vec<u32>,
+    bin_scale: f64,
+    joints: Vec<f64>,
+    info: ArcLengthInfo,
+    /// `NOISE·(t1 − t0)`.
+    noise: f64,
+    /// `L`.
+    length: f64,
+}
+
+impl Table {
+    /// The construction of [`ArcLength::try_with_accuracy`] for a curve with this domain and
+    /// these joints, from its speed.
+    fn build(
+        domain: [f64; 2],
+        curve_joints: &[f64],
+        accuracy: f64,
+        speed: &Speed<'_>,
+    ) -> Result<Self, ArcLengthError> {
         if !(accuracy.is_finite() && accuracy > 0.0) {
             return Err(ArcLengthError::InvalidAccuracy { accuracy });
         }
-        let [t0, t1] = curve.domain();
+        let [t0, t1] = domain;
         let collapse = accuracy / 1024.0;
         let mut builder = Builder {
-            curve: &curve,
+            speed,
             tol: accuracy / (t1 - t0),
             cells: Vec::new(),
             depths: Vec::new(),
@@ -596,7 +626,7 @@ impl<C: Curve> ArcLength<C> {
         let mut stalls = Vec::new();
         let mut joints = vec![0.0];
         let mut s = 0.0_f64;
-        for w in curve.joints().windows(2) {
+        for w in curve_joints.windows(2) {
             let (a, b) = (w[0], w[1]);
             let first = builder.cells.len();
             builder.piece_start = first;
@@ -679,20 +709,6 @@ impl<C: Curve> ArcLength<C> {
                 u32::try_from(j).unwrap_or(u32::MAX)
             })
             .collect();
-        let mut this = Self {
-            curve,
-            accuracy,
-            cells,
-            live,
-            live_s0,
-            live_s1,
-            bins,
-            bin_scale,
-            joints,
-            info: ArcLengthInfo::default(),
-            noise: NOISE * (t1 - t0),
-            length: s,
-        };
         // One stall where runs meet at a joint.
         let mut merged: Vec<Stall> = Vec::with_capacity(stalls.len());
         for st in stalls {
@@ -703,16 +719,34 @@ impl<C: Curve> ArcLength<C> {
         }
         let mut stalls = merged;
         for st in &mut stalls {
-            st.s = this.arc_length_at(st.t[0]);
+            st.s = s_at(&cells, domain, st.t[0]);
         }
-        this.info = ArcLengthInfo {
+        let info = ArcLengthInfo {
             stalls,
-            cells: this.cells.len(),
+            cells: cells.len(),
             evaluations,
             unresolved,
         };
-        Ok(this)
+        Ok(Self {
+            cells,
+            live,
+            live_s0,
+            live_s1,
+            bins,
+            bin_scale,
+            joints,
+            info,
+            noise: NOISE * (t1 - t0),
+            length: s,
+        })
     }
+}
+
+/// `s(t)` on the table `cells` of a curve over `domain` (`t` clamped to it).
+fn s_at(cells: &[Cell], domain: [f64; 2], t: f64) -> f64 {
+    let t = clamp_param(t, domain);
+    let j = cells.partition_point(|c| c.a <= t).saturating_sub(1);
+    cells[j].s_at(t)
 }
 
 /// # Access
@@ -721,16 +755,14 @@ impl<C: Curve> ArcLength<C> {
     /// S³.
     #[must_use]
     pub fn length(&self) -> f64 {
-        self.length
+        self.table.length
     }
 
     /// The arc length `s(t)` from the start of the curve to its parameter `t` (clamped to the
     /// curve's domain): non-decreasing, `s(t0) = 0`, `s(t1) = L`.
     #[must_use]
     pub fn arc_length_at(&self, t: f64) -> f64 {
-        let t = clamp_param(t, self.curve.domain());
-        let j = self.cells.partition_point(|c| c.a <= t).saturating_sub(1);
-        self.cells[j].s_at(t)
+        s_at(&self.table.cells, self.curve.domain(), t)
     }
 
     /// The curve's parameter `t(s)` at arc length `s` (clamped to `[0, L]`): the inverse of
@@ -739,7 +771,7 @@ impl<C: Curve> ArcLength<C> {
     #[must_use]
     pub fn param_at(&self, s: f64) -> f64 {
         let (cell, u) = self.locate(s, Side::Right);
-        self.cells[cell].t_at(u)
+        self.table.cells[cell].t_at(u)
     }
 
     /// The accuracy the table was built for.
@@ -751,7 +783,7 @@ impl<C: Curve> ArcLength<C> {
     /// What the construction found: stalls, cells, evaluations.
     #[must_use]
     pub fn info(&self) -> &ArcLengthInfo {
-        &self.info
+        &self.table.info
     }
 
     /// The original curve.
@@ -771,7 +803,7 @@ impl<C: Curve> ArcLength<C> {
     #[inline]
     fn locate(&self, s: f64, side: Side) -> (usize, f64) {
         let s = clamp_param(s, [0.0, self.length()]);
-        let n = self.live.len();
+        let n = self.table.live.len();
         // The bin of `s` bounds the search: the last cell starting at or before `s` is in
         // `[lo, hi)` (each end checked, so that rounding of the bin edges cannot matter). Live
         // cells are consecutive, `live_s1[j] = live_s0[j + 1]`, both strictly increasing.
@@ -780,26 +812,31 @@ impl<C: Curve> ArcLength<C> {
             clippy::cast_sign_loss,
             reason = "s ≥ 0; the cast saturates and the bin is clamped"
         )]
-        let b = ((s * self.bin_scale) as usize).min(self.bins.len() - 1);
-        let mut lo = self.bins[b] as usize;
-        let mut hi = self.bins.get(b + 1).map_or(n, |&x| x as usize + 1).min(n);
-        if self.live_s0[lo] > s {
+        let b = ((s * self.table.bin_scale) as usize).min(self.table.bins.len() - 1);
+        let mut lo = self.table.bins[b] as usize;
+        let mut hi = self
+            .table
+            .bins
+            .get(b + 1)
+            .map_or(n, |&x| x as usize + 1)
+            .min(n);
+        if self.table.live_s0[lo] > s {
             lo = 0;
         }
-        if hi < n && self.live_s0[hi] <= s {
+        if hi < n && self.table.live_s0[hi] <= s {
             hi = n;
         }
         let j = match side {
             // The largest j with live_s0[j] ≤ s (live_s0[0] = 0 ≤ s).
-            Side::Right => lo + self.live_s0[lo..hi].partition_point(|&x| x <= s) - 1,
+            Side::Right => lo + self.table.live_s0[lo..hi].partition_point(|&x| x <= s) - 1,
             // The smallest j with live_s1[j] ≥ s (every j < lo − 1 has live_s1[j] < s).
             Side::Left => {
                 let l = lo.saturating_sub(1);
-                (l + self.live_s1[l..hi].partition_point(|&x| x < s)).min(n - 1)
+                (l + self.table.live_s1[l..hi].partition_point(|&x| x < s)).min(n - 1)
             }
         };
-        let cell = self.live[j];
-        let c = &self.cells[cell];
+        let cell = self.table.live[j];
+        let c = &self.table.cells[cell];
         (cell, c.solve(s - c.s0))
     }
 }
@@ -812,7 +849,7 @@ impl<C: Curve> Curve for ArcLength<C> {
     }
 
     fn joints(&self) -> &[f64] {
-        &self.joints
+        &self.table.joints
     }
 
     fn is_closed(&self) -> bool {
@@ -821,7 +858,7 @@ impl<C: Curve> Curve for ArcLength<C> {
 
     fn jet_at(&self, s: f64, side: Side) -> Jet<C::Point> {
         let (t, inner) = self.curve_param(s, side);
-        reparametrise(self.curve.jet_at(t, inner), side, self.noise)
+        reparametrise(self.curve.jet_at(t, inner), side, self.table.noise)
     }
 
     fn eval(&self, s: f64) -> C::Point {
@@ -849,7 +886,7 @@ impl<C: Curve> Curve for ArcLength<C> {
                 if left[k] {
                     *o = self.curve.jet_at(ts[k], Side::Left);
                 }
-                *o = reparametrise(o.clone(), Side::Right, self.noise);
+                *o = reparametrise(o.clone(), Side::Right, self.table.noise);
             }
         }
     }
@@ -884,7 +921,7 @@ impl<C: Curve> ArcLength<C> {
     #[inline]
     fn curve_param(&self, s: f64, side: Side) -> (f64, Side) {
         let (cell, u) = self.locate(s, side);
-        let t = self.cells[cell].t_at(u);
+        let t = self.table.cells[cell].t_at(u);
         let inner = if u >= 1.0 {
             Side::Left
         } else if u <= -1.0 {
