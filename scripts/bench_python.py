@@ -9,6 +9,10 @@ Rows: numpy arrays in, numpy arrays out (order 0 returns a scipy `Rotation` for 
 and 200 000 times for evaluation; 1 000 keys for construction. Each figure is the best of
 several repetitions (wall clock). spherekit splits large batches over the available cores;
 the "1 thread" column is the same call with SPHEREKIT_THREADS=1.
+
+After the table: the constructors' native part alone (the Rust class the drop-in calls, given
+the (n, 4) array), and the 1 000 keys written to target/bench_python_keys.txt for timing the
+core alone on them (`cargo run --release -p spherekit-py --example core_construction`).
 """
 
 import os
@@ -51,6 +55,10 @@ def main():
     ours_slerp, theirs_slerp = spherekit.Slerp(times, keys), ScipySlerp(times, keys)
     big = walk(rng, 1000, 1.0)
     big_times = np.concatenate([[0.0], rng.uniform(0.3, 2.0, 999)]).cumsum()
+    big_quat = big.as_quat()
+    keys_file = os.path.join(os.path.dirname(__file__), "..", "target", "bench_python_keys.txt")
+    os.makedirs(os.path.dirname(keys_file), exist_ok=True)
+    np.savetxt(keys_file, np.column_stack([big_times, big_quat]), fmt="%.17g")
 
     def all_orders(s):
         return lambda: (s(t), s(t, 1), s(t, 2))
@@ -91,6 +99,13 @@ def main():
         tb = best(b, repeat)
         print(f"| {label} | {ta * 1e3:.2f} ms | {ta1 * 1e3:.2f} ms | {tb * 1e3:.2f} ms "
               f"| {tb / ta:.1f}× | {tb / ta1:.1f}× |")
+    native = spherekit._spherekit
+    print()
+    print("native part of the constructors, 1 000 keys, (n, 4) array in (best of 200): "
+          f"RotationSpline {best(lambda: native._CubicRotations(big_times, big_quat), 200) * 1e6:.1f} µs, "
+          f"Slerp {best(lambda: native._SlerpRotations(big_times, big_quat), 200) * 1e6:.1f} µs; "
+          "the core alone on the same keys: cargo run --release -p spherekit-py --example "
+          "core_construction")
 
 
 if __name__ == "__main__":
