@@ -190,3 +190,16 @@ def test_slerp_batches_agree_bit_for_bit(rng, monkeypatch):
     monkeypatch.setenv("SPHEREKIT_THREADS", "2")
     assert np.array_equal(one, native(t))
     assert np.array_equal(one[::997], np.array([native(x) for x in t[::997]]))
+
+
+def test_quaternion_arrays_in_any_memory_layout(rng):
+    """Keys read from numpy's buffer in place (C order) or copied (Fortran order, strided
+    views) are the same keys, bit for bit."""
+    keys, times = walk(rng, 6, 1.0), random_times(rng, 6)
+    q = keys.as_quat()
+    t = np.linspace(times[0], times[-1], 50)
+    spline, slerp = spherekit.RotationSpline(times, q)(t, 1), spherekit.Slerp(times, q)(t).as_quat()
+    for layout in (np.asfortranarray(q), np.repeat(q, 2, axis=0)[::2], np.hstack([q, -q])[:, :4]):
+        assert not layout.flags.c_contiguous
+        assert np.array_equal(spherekit.RotationSpline(times, layout)(t, 1), spline)
+        assert np.array_equal(spherekit.Slerp(times, layout)(t).as_quat(), slerp)
