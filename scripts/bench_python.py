@@ -7,8 +7,12 @@
 
 Rows: numpy arrays in, numpy arrays out (order 0 returns a scipy `Rotation` for both), 20 keys
 and 200 000 times for evaluation; 1 000 keys for construction. Each figure is the best of
-several repetitions (wall clock). spherekit splits large batches over the available cores;
+several repetitions (wall clock: 10 for evaluation, 100 for construction). spherekit splits large batches over the available cores;
 the "1 thread" column is the same call with SPHEREKIT_THREADS=1.
+
+After the table: the constructors' native part alone (the Rust class the drop-in calls, given
+the (n, 4) array), and the 1 000 keys written to target/bench_python_keys.txt for timing the
+core alone on them (`cargo run --release -p spherekit-py --example core_construction`).
 """
 
 import os
@@ -51,21 +55,25 @@ def main():
     ours_slerp, theirs_slerp = spherekit.Slerp(times, keys), ScipySlerp(times, keys)
     big = walk(rng, 1000, 1.0)
     big_times = np.concatenate([[0.0], rng.uniform(0.3, 2.0, 999)]).cumsum()
+    big_quat = big.as_quat()
+    keys_file = os.path.join(os.path.dirname(__file__), "..", "target", "bench_python_keys.txt")
+    os.makedirs(os.path.dirname(keys_file), exist_ok=True)
+    np.savetxt(keys_file, np.column_stack([big_times, big_quat]), fmt="%.17g")
 
     def all_orders(s):
         return lambda: (s(t), s(t, 1), s(t, 2))
 
     rows = [
         ("RotationSpline, 20 keys: (t), (t, 1), (t, 2) at 200 000 times",
-         all_orders(ours), all_orders(theirs), 5),
-        ("RotationSpline, 20 keys: (t) at 200 000 times", lambda: ours(t), lambda: theirs(t), 5),
-        ("RotationSpline, 20 keys: (t, 1) at 200 000 times", lambda: ours(t, 1), lambda: theirs(t, 1), 5),
-        ("RotationSpline, 20 keys: (t, 2) at 200 000 times", lambda: ours(t, 2), lambda: theirs(t, 2), 5),
-        ("Slerp, 20 keys: (t) at 200 000 times", lambda: ours_slerp(t), lambda: theirs_slerp(t), 5),
+         all_orders(ours), all_orders(theirs), 10),
+        ("RotationSpline, 20 keys: (t) at 200 000 times", lambda: ours(t), lambda: theirs(t), 10),
+        ("RotationSpline, 20 keys: (t, 1) at 200 000 times", lambda: ours(t, 1), lambda: theirs(t, 1), 10),
+        ("RotationSpline, 20 keys: (t, 2) at 200 000 times", lambda: ours(t, 2), lambda: theirs(t, 2), 10),
+        ("Slerp, 20 keys: (t) at 200 000 times", lambda: ours_slerp(t), lambda: theirs_slerp(t), 10),
         ("RotationSpline construction, 1 000 keys",
-         lambda: spherekit.RotationSpline(big_times, big), lambda: ScipySpline(big_times, big), 20),
+         lambda: spherekit.RotationSpline(big_times, big), lambda: ScipySpline(big_times, big), 100),
         ("Slerp construction, 1 000 keys",
-         lambda: spherekit.Slerp(big_times, big), lambda: ScipySlerp(big_times, big), 20),
+         lambda: spherekit.Slerp(big_times, big), lambda: ScipySlerp(big_times, big), 100),
     ]
     # The same curve: agreement on the timed parameters.
     angle = (ours(t).inv() * theirs(t)).magnitude().max()
@@ -91,6 +99,13 @@ def main():
         tb = best(b, repeat)
         print(f"| {label} | {ta * 1e3:.2f} ms | {ta1 * 1e3:.2f} ms | {tb * 1e3:.2f} ms "
               f"| {tb / ta:.1f}× | {tb / ta1:.1f}× |")
+    native = spherekit._spherekit
+    print()
+    print("native part of the constructors, 1 000 keys, (n, 4) array in (best of 200): "
+          f"RotationSpline {best(lambda: native._CubicRotations(big_times, big_quat), 200) * 1e6:.1f} µs, "
+          f"Slerp {best(lambda: native._SlerpRotations(big_times, big_quat), 200) * 1e6:.1f} µs; "
+          "the core alone on the same keys: cargo run --release -p spherekit-py --example "
+          "core_construction")
 
 
 if __name__ == "__main__":

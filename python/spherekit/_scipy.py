@@ -116,7 +116,7 @@ class RotationSpline:
                 "Expected number of rotations to be equal to number of timestamps given, "
                 f"got {len(q)} rotations and {len(times)} timestamps."
             )
-        if np.any(np.diff(times) <= 0):
+        if (np.diff(times) <= 0).any():
             raise ValueError("Values in `times` must be in a strictly increasing order.")
         if end is None:
             end = "natural" if closed else "scipy"
@@ -168,11 +168,12 @@ class Slerp:
                 "Expected number of rotations to be equal to number of timestamps "
                 f"given, got {len(q)} rotations and {times.shape[0]} timestamps."
             )
-        if np.any(np.diff(times) <= 0):
+        timedelta = np.diff(times)
+        if (timedelta <= 0).any():
             raise ValueError("Times must be in strictly increasing order.")
         self._native = _spherekit._SlerpRotations(times, q)
         self.times = times
-        self.timedelta = np.diff(times)
+        self.timedelta = timedelta
 
     def __call__(self, times):
         """The interpolated rotations at ``times`` (a number or a 1-D array within the key

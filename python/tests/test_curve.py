@@ -168,3 +168,17 @@ def test_arclength_and_extrapolate_options():
         strict([0.5, 2.0])
     with pytest.raises(ValueError, match='extrapolate: "cycle" repeats a closed curve'):
         spherekit.Curve("geodesic", keys, extrapolate="cycle")
+
+
+def test_batches_split_over_threads_agree_bit_for_bit(rng, monkeypatch):
+    c = spherekit.Curve("squad", walk(rng, 5, 1.0).as_quat())
+    t = np.linspace(-0.5, 4.5, 40_000)
+    t[[7, 30_000]] = np.nan
+    calls = [lambda: c(t), lambda: c(t, 1), lambda: c(t, 2), lambda: c.angular_velocity(t, "body"),
+             lambda: c.angular_acceleration(t)]
+    for call in calls:
+        monkeypatch.setenv("SPHEREKIT_THREADS", "1")
+        one = call()
+        monkeypatch.setenv("SPHEREKIT_THREADS", "2")
+        assert np.array_equal(one, call(), equal_nan=True)
+        assert np.isnan(one[[7, 30_000]]).all() and not np.isnan(one[[6, 8]]).any()

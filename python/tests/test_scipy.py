@@ -153,3 +153,53 @@ def test_slerp_outside_raises_as_scipy(rng):
     for t in (-0.1, [0.0, 2.5], np.nan, [[0.5]]):
         e = errors(lambda: ours(t))
         assert e is not None and e == errors(lambda: theirs(t))
+
+
+@pytest.mark.parametrize("closed", [False, True])
+def test_rotation_spline_batches_agree_bit_for_bit(rng, monkeypatch, closed):
+    """Every order gives the same bits however a batch is split: over threads (batches of at
+    least 32 768 times), into chunks inside the key times (the rate from the point and velocity
+    alone) or with times outside them (the extrapolation's jets), or one time per call."""
+    keys = walk(rng, 6, 1.0)
+    times = random_times(rng, 7 if closed else 6)
+    native = spherekit.RotationSpline(times, keys, closed=closed)._native
+    t = np.linspace(times[0] - 0.5, times[-1] + 0.5, 40_000)
+    t[[3, 20_001, 39_998]] = np.nan
+    for order in (0, 1, 2):
+        monkeypatch.setenv("SPHEREKIT_THREADS", "1")
+        one = native(t, order)
+        monkeypatch.setenv("SPHEREKIT_THREADS", "2")
+        two = native(t, order)
+        assert np.array_equal(one, two, equal_nan=True)
+        assert np.isnan(one[[3, 20_001, 39_998]]).all() and not np.isnan(one[[2, 4, 39_999]]).any()
+        # Singles inside the key times take the chunk path the big batch's first and last
+        # chunks (times outside) do not.
+        picks = np.arange(0, len(t), 397)
+        singles = np.array([native(t[k], order) for k in picks])
+        assert np.array_equal(one[picks], singles, equal_nan=True)
+        inside = (t >= times[0]) & (t <= times[-1])
+        assert np.array_equal(one[inside], native(t[inside], order))
+
+
+def test_slerp_batches_agree_bit_for_bit(rng, monkeypatch):
+    keys, times = walk(rng, 8, 1.5), random_times(rng, 8)
+    native = spherekit.Slerp(times, keys)._native
+    t = np.linspace(times[0], times[-1], 40_000)
+    monkeypatch.setenv("SPHEREKIT_THREADS", "1")
+    one = native(t)
+    monkeypatch.setenv("SPHEREKIT_THREADS", "2")
+    assert np.array_equal(one, native(t))
+    assert np.array_equal(one[::997], np.array([native(x) for x in t[::997]]))
+
+
+def test_quaternion_arrays_in_any_memory_layout(rng):
+    """Keys read from numpy's buffer in place (C order) or copied (Fortran order, strided
+    views) are the same keys, bit for bit."""
+    keys, times = walk(rng, 6, 1.0), random_times(rng, 6)
+    q = keys.as_quat()
+    t = np.linspace(times[0], times[-1], 50)
+    spline, slerp = spherekit.RotationSpline(times, q)(t, 1), spherekit.Slerp(times, q)(t).as_quat()
+    for layout in (np.asfortranarray(q), np.repeat(q, 2, axis=0)[::2], np.hstack([q, -q])[:, :4]):
+        assert not layout.flags.c_contiguous
+        assert np.array_equal(spherekit.RotationSpline(times, layout)(t, 1), spline)
+        assert np.array_equal(spherekit.Slerp(times, layout)(t).as_quat(), slerp)

@@ -70,14 +70,22 @@ pub(crate) fn rows<'py>(
     }
 }
 
-/// An `(n, d)` array of points (any array-like of numbers), as rows.
-pub(crate) fn point_rows(points: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vec<f64>>> {
-    let array: PyArrayLike2<'_, f64, AllowTypeChange> = points.extract().map_err(|_| {
+/// An `(n, d)` array of points (any array-like of numbers), borrowed from numpy when it is a
+/// `float64` array already.
+pub(crate) fn point_array<'py>(
+    points: &Bound<'py, PyAny>,
+    name: &str,
+) -> PyResult<PyArrayLike2<'py, f64, AllowTypeChange>> {
+    points.extract().map_err(|_| {
         value_error(format!(
             "`{name}` must be an (n, d) array of numbers (n points of d coordinates)"
         ))
-    })?;
-    Ok(array
+    })
+}
+
+/// An `(n, d)` array of points (any array-like of numbers), as rows.
+pub(crate) fn point_rows(points: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vec<f64>>> {
+    Ok(point_array(points, name)?
         .as_array()
         .rows()
         .into_iter()

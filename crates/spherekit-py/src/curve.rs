@@ -9,10 +9,8 @@ use serde_json::{Map, Value, json};
 use spherekit::{Curve, Extrapolate, Jet, S2Point, SnPoint, UnitQuat};
 use spherekit_scene::{Built, BuiltCurve, Scene, ScenePoint, continuity_json};
 
+use crate::batch;
 use crate::convert::{Times, from_json, point_rows, rows, to_json, value_error};
-
-/// How many parameters one `eval_many`/`jet_many` call gets: the buffers stay in cache.
-const CHUNK: usize = 1024;
 
 /// What to evaluate at each parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,159 +49,92 @@ pub(crate) fn body_frame(frame: &str) -> PyResult<bool> {
 
 /// A sphere's points and vectors written as rows of numbers.
 pub(crate) trait Flat: ScenePoint {
-    fn put_point(&self, scalar_first: bool, out: &mut Vec<f64>);
-    fn put_vector(v: &Self::Vector, scalar_first: bool, out: &mut Vec<f64>);
+    /// Writes the point's coordinates into `row` (exactly as many numbers).
+    fn write_point(&self, scalar_first: bool, row: &mut [f64]);
+    /// Writes an ambient vector's coordinates into `row`.
+    fn write_vector(v: &Self::Vector, scalar_first: bool, row: &mut [f64]);
 }
 
 impl Flat for S2Point {
-    fn put_point(&self, _: bool, out: &mut Vec<f64>) {
-        out.extend_from_slice(&self.as_dvec3().to_array());
+    fn write_point(&self, _: bool, row: &mut [f64]) {
+        row.copy_from_slice(&self.as_dvec3().to_array());
     }
-    fn put_vector(v: &spherekit::glam::DVec3, _: bool, out: &mut Vec<f64>) {
-        out.extend_from_slice(&v.to_array());
+    fn write_vector(v: &spherekit::glam::DVec3, _: bool, row: &mut [f64]) {
+        row.copy_from_slice(&v.to_array());
     }
 }
 
 impl Flat for UnitQuat {
-    fn put_point(&self, scalar_first: bool, out: &mut Vec<f64>) {
-        Self::put_vector(&spherekit::Manifold::to_vector(self), scalar_first, out);
+    fn write_point(&self, scalar_first: bool, row: &mut [f64]) {
+        Self::write_vector(&spherekit::Manifold::to_vector(self), scalar_first, row);
     }
-    fn put_vector(v: &spherekit::glam::DVec4, scalar_first: bool, out: &mut Vec<f64>) {
+    fn write_vector(v: &spherekit::glam::DVec4, scalar_first: bool, row: &mut [f64]) {
         if scalar_first {
-            out.extend_from_slice(&[v.w, v.x, v.y, v.z]);
+            row.copy_from_slice(&[v.w, v.x, v.y, v.z]);
         } else {
-            out.extend_from_slice(&v.to_array());
+            row.copy_from_slice(&v.to_array());
         }
     }
 }
 
 impl Flat for SnPoint {
-    fn put_point(&self, _: bool, out: &mut Vec<f64>) {
-        out.extend_from_slice(self.coords());
+    fn write_point(&self, _: bool, row: &mut [f64]) {
+        row.copy_from_slice(self.coords());
     }
-    fn put_vector(v: &spherekit::VecN, _: bool, out: &mut Vec<f64>) {
-        out.extend_from_slice(v.as_slice());
+    fn write_vector(v: &spherekit::VecN, _: bool, row: &mut [f64]) {
+        row.copy_from_slice(v.as_slice());
     }
 }
 
-/// Below this many parameters a batch is evaluated on the calling thread only.
-const PARALLEL_MIN: usize = 32_768;
-
-/// The threads a large batch is split over: `SPHEREKIT_THREADS` if set (1 turns the splitting
-/// off; read at every batch), else the available parallelism, at most 8.
-fn threads() -> usize {
-    static AVAILABLE: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
-    std::env::var("SPHEREKIT_THREADS")
-        .ok()
-        .and_then(|v| v.parse::<usize>().ok())
-        .unwrap_or_else(|| {
-            *AVAILABLE.get_or_init(|| {
-                std::thread::available_parallelism()
-                    .map_or(1, usize::from)
-                    .min(8)
-            })
-        })
-        .max(1)
-}
-
-/// Evaluates `what` at every parameter into rows (`width` numbers each). NaN parameters give
-/// rows of NaN (the library's curves are not evaluated at NaN). Large batches are split into
-/// contiguous parts evaluated on scoped threads (see [`threads`]); the values are the same
-/// as on one thread, bit for bit.
-pub(crate) fn evaluate<P: Flat>(
-    curve: &(dyn Curve<Point = P> + Send + Sync),
-    ts: &[f64],
-    what: What,
-    width: usize,
-    scalar_first: bool,
-) -> Vec<f64> {
-    let parts = threads().min(ts.len() / (PARALLEL_MIN / 2)).max(1);
-    if parts == 1 {
-        return evaluate_serial(curve, ts, what, width, scalar_first);
-    }
-    let size = ts.len().div_ceil(parts);
-    std::thread::scope(|scope| {
-        let handles: Vec<_> = ts
-            .chunks(size)
-            .map(|part| {
-                scope.spawn(move || evaluate_serial(curve, part, what, width, scalar_first))
-            })
-            .collect();
-        let mut out = Vec::with_capacity(ts.len() * width);
-        for h in handles {
-            // A panic in a part is re-raised here (pyo3 turns it into a Python exception).
-            out.extend_from_slice(&h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
-        }
-        out
-    })
-}
-
-fn evaluate_serial<P: Flat>(
-    curve: &(dyn Curve<Point = P> + Send + Sync),
+/// Evaluates `what` at every parameter into rows (`width` numbers each), with the core's batch
+/// calls ([`batch`]: large batches split over threads, the values the same bit for bit). NaN
+/// parameters give rows of NaN (the library's curves are not evaluated at NaN).
+pub(crate) fn evaluate<P: Flat, C: Curve<Point = P> + Sync + ?Sized>(
+    curve: &C,
     ts: &[f64],
     what: What,
     width: usize,
     scalar_first: bool,
 ) -> Vec<f64> {
     let t0 = curve.domain()[0];
-    let mut out = Vec::with_capacity(ts.len() * width);
-    let mut clean = Vec::new();
-    let n = ts.len().min(CHUNK);
-    let mut points = Vec::new();
-    let mut jets: Vec<Jet<P>> = Vec::new();
-    if what == What::Point {
-        points = vec![curve.eval(t0); n];
-    } else {
-        jets = vec![curve.jet(t0); n];
-    }
-    for chunk in ts.chunks(CHUNK) {
-        let chunk = if chunk.iter().any(|t| t.is_nan()) {
-            clean.clear();
-            clean.extend(chunk.iter().map(|&t| if t.is_nan() { t0 } else { t }));
-            clean.as_slice()
-        } else {
-            chunk
-        };
+    batch::split(ts, width, |ts, out| {
         if what == What::Point {
-            let ps = &mut points[..chunk.len()];
-            curve.eval_many(chunk, ps);
-            for p in ps.iter() {
-                p.put_point(scalar_first, &mut out);
-            }
+            batch::by_chunks(ts, out, width, t0, curve.eval(t0), |chunk, ps, rows| {
+                curve.eval_many(chunk, ps);
+                for (p, row) in ps.iter().zip(rows.chunks_exact_mut(width)) {
+                    p.write_point(scalar_first, row);
+                }
+            });
         } else {
-            let js = &mut jets[..chunk.len()];
-            curve.jet_many(chunk, js);
-            put_jets(js, what, scalar_first, &mut out);
+            batch::by_chunks(ts, out, width, t0, curve.jet(t0), |chunk, js, rows| {
+                curve.jet_many(chunk, js);
+                write_jets(js, what, scalar_first, width, rows);
+            });
         }
-    }
-    for (k, t) in ts.iter().enumerate() {
-        if t.is_nan() {
-            out[k * width..(k + 1) * width].fill(f64::NAN);
-        }
-    }
-    out
+    })
 }
 
-/// The rows of `what` for these jets.
-pub(crate) fn put_jets<P: Flat>(
+/// The rows of `what` for these jets: row `k` of `rows` (`width` numbers each) for jet `k`.
+pub(crate) fn write_jets<P: Flat>(
     jets: &[Jet<P>],
     what: What,
     scalar_first: bool,
-    out: &mut Vec<f64>,
+    width: usize,
+    rows: &mut [f64],
 ) {
-    for jet in jets {
+    for (jet, row) in jets.iter().zip(rows.chunks_exact_mut(width)) {
         match what {
-            What::Point => jet.point.put_point(scalar_first, out),
-            What::Velocity => P::put_vector(&jet.velocity, scalar_first, out),
-            What::Acceleration => P::put_vector(&jet.acceleration, scalar_first, out),
+            What::Point => jet.point.write_point(scalar_first, row),
+            What::Velocity => P::write_vector(&jet.velocity, scalar_first, row),
+            What::Acceleration => P::write_vector(&jet.acceleration, scalar_first, row),
             What::AngularVelocity(body) => {
                 if let Some((w, _)) = P::angular(jet, body) {
-                    out.extend_from_slice(&w);
+                    row.copy_from_slice(&w);
                 }
             }
             What::AngularAcceleration(body) => {
                 if let Some((_, a)) = P::angular(jet, body) {
-                    out.extend_from_slice(&a);
+                    row.copy_from_slice(&a);
                 }
             }
         }
@@ -277,9 +208,9 @@ impl PyCurve {
         if ps.is_empty() {
             return Ok(None);
         }
-        let mut out = Vec::with_capacity(ps.len() * self.width);
-        for p in ps {
-            p.put_point(self.scalar_first, &mut out);
+        let mut out = vec![0.0; ps.len() * self.width];
+        for (p, row) in ps.iter().zip(out.chunks_exact_mut(self.width)) {
+            p.write_point(self.scalar_first, row);
         }
         rows(py, out, self.width, false).map(Some)
     }

@@ -7,10 +7,13 @@
 //! crates. `Curve` (module `curve`) goes through the scene format and its method registry, so
 //! every registered method, parameter and error message is the CLI's; the scipy drop-ins
 //! (`RotationSpline`, `Slerp` in `python/spherekit/_scipy.py`) use the core's `CubicSpline`
-//! and `GeodesicSpline` directly (module `rotation`). Batches are evaluated with `eval_many` /
-//! `jet_many` with the interpreter lock released; bad input is a `ValueError` carrying the
-//! one-line message of the CLI, never a panic.
+//! and `GeodesicSpline` directly (module `rotation`). Batches are evaluated with the core's
+//! batch calls (`eval_many`, `jet_many`, and `CubicSpline::point_velocity_many` for the
+//! drop-in's angular rate) with the interpreter lock released, straight into the one buffer
+//! numpy then takes over (module `batch`); bad input is a `ValueError` carrying the one-line
+//! message of the CLI, never a panic.
 
+mod batch;
 mod convert;
 mod curve;
 mod rotation;

@@ -285,6 +285,7 @@ pub fn unflip(keys: &mut [UnitQuat]) -> usize {
 /// real and drops out of the vector part). The body-frame values are `q̄·ω·q` and `q̄·α·q`.
 /// `dq` and `ddq` are ambient `x, y, z, w` vectors.
 #[must_use]
+#[inline]
 pub fn angular_velocity_acceleration(q: UnitQuat, dq: DVec4, ddq: DVec4) -> (DVec3, DVec3) {
     let qc = q.0.conjugate();
     let omega = (DQuat::from_vec4(dq) * qc).xyz() * 2.0;
@@ -323,6 +324,7 @@ pub fn angular_velocity_acceleration(q: UnitQuat, dq: DVec4, ddq: DVec4) -> (DVe
 /// assert!((q.rotate(wb) - w).length() < 1e-14); // ω = q·ω_b·q̄
 /// ```
 #[must_use]
+#[inline]
 pub fn angular_velocity_acceleration_body(q: UnitQuat, dq: DVec4, ddq: DVec4) -> (DVec3, DVec3) {
     let qc = q.0.conjugate();
     let omega = (qc * DQuat::from_vec4(dq)).xyz() * 2.0;
