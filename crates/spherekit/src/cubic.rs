@@ -562,6 +562,7 @@ impl<P: Manifold> CubicSpline<P> {
     }
 
     /// The point and velocity of segment `i` at `s`, with what the acceleration needs.
+    #[inline(always)]
     fn local(&self, i: usize, s: f64) -> Local<P> {
         let g = &self.segments[i];
         let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
