@@ -35,6 +35,17 @@ pub trait Ambient:
     /// Coordinates in storage order (for `DVec4` ambient quaternions: `x, y, z, w`).
     fn to_vec(&self) -> Vec<f64>;
 
+    /// The coordinates of [`to_vec`](Self::to_vec), borrowed.
+    fn as_slice(&self) -> &[f64];
+
+    /// The vector of `self`'s dimension with the coordinates `coords` (in storage order).
+    ///
+    /// # Panics
+    ///
+    /// If `coords` has fewer than [`dim`](Self::dim) coordinates.
+    #[must_use]
+    fn with_coords(&self, coords: &[f64]) -> Self;
+
     /// The Euclidean length. Finite for every finite vector: when the sum of squares overflows
     /// (a coordinate above about 1e154, such as a second derivative over a tiny knot spacing),
     /// the coordinates are rescaled by the largest one first.
@@ -67,6 +78,14 @@ impl Ambient for DVec3 {
         self.to_array().to_vec()
     }
     #[inline]
+    fn as_slice(&self) -> &[f64] {
+        AsRef::<[f64; 3]>::as_ref(self)
+    }
+    #[inline]
+    fn with_coords(&self, coords: &[f64]) -> Self {
+        Self::from_slice(coords)
+    }
+    #[inline]
     fn is_finite(&self) -> bool {
         DVec3::is_finite(*self)
     }
@@ -86,6 +105,14 @@ impl Ambient for DVec4 {
     }
     fn to_vec(&self) -> Vec<f64> {
         self.to_array().to_vec()
+    }
+    #[inline]
+    fn as_slice(&self) -> &[f64] {
+        AsRef::<[f64; 4]>::as_ref(self)
+    }
+    #[inline]
+    fn with_coords(&self, coords: &[f64]) -> Self {
+        Self::from_slice(coords)
     }
     #[inline]
     fn is_finite(&self) -> bool {
@@ -178,6 +205,12 @@ impl Ambient for VecN {
     }
     fn to_vec(&self) -> Vec<f64> {
         self.0.clone()
+    }
+    fn as_slice(&self) -> &[f64] {
+        &self.0
+    }
+    fn with_coords(&self, coords: &[f64]) -> Self {
+        Self(coords[..self.0.len()].to_vec())
     }
     fn is_finite(&self) -> bool {
         self.0.iter().all(|a| a.is_finite())

@@ -326,12 +326,20 @@ impl<P: Manifold> CubicSpline<P> {
             _ => None,
         };
 
-        // Span coordinates of the keys, the directions and the clamped velocities.
+        // Span coordinates of the keys, the directions and the clamped velocities: the ambient
+        // coordinates when the keys span the whole space (as keys on S³ in general position do).
         let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
         let clamp_vectors = clamps.iter().flat_map(|(s, e)| [s, e]);
-        let basis = span_basis(vectors[0].dim(), vectors.iter().chain(clamp_vectors));
+        let basis = span_basis(dim, vectors.iter().chain(clamp_vectors));
         let r = basis.len();
-        let coords = |v: &P::Vector, out: &mut Vec<f64>| out.extend(basis.iter().map(|b| b.dot(v)));
+        let whole = r == dim;
+        let coords = |v: &P::Vector, out: &mut Vec<f64>| {
+            if whole {
+                out.extend_from_slice(v.as_slice());
+            } else {
+                out.extend(basis.iter().map(|b| b.dot(v)));
+            }
+        };
         let mut xs = Vec::with_capacity(n * r);
         for v in &vectors {
             coords(v, &mut xs);
@@ -399,6 +407,9 @@ impl<P: Manifold> CubicSpline<P> {
         // Back to ambient vectors: key velocities Vₖ and end velocities Uᵢ = Nᵢ Vᵢ₊₁.
         let zero = vectors[0].zeros_like();
         let ambient = |span: &[f64]| {
+            if whole {
+                return zero.with_coords(span);
+            }
             let mut v = zero.clone();
             for (b, &c) in basis.iter().zip(span) {
                 v += b.clone() * c;
@@ -835,9 +846,9 @@ impl Frames {
                 id - scale * uj
             }));
         }
-        data.resize(count * m * r, 0.0);
         let mut ehat = Vec::with_capacity((count - 1) * m);
         let mut e_end = vec![0.0; r];
+        let mut g = vec![0.0; r];
         for k in 0..count - 1 {
             let (x, e) = (&xs[k * r..(k + 1) * r], &es[k * r..(k + 1) * r]);
             let next = ((k + 1) % n) * r;
@@ -848,18 +859,18 @@ impl Frames {
             }
             // Frame k + 1: each vector of frame k with its component along e rotated into e′
             // (the parallel transport), then orthogonalised against the next key.
-            let (done, rest) = data.split_at_mut((k + 1) * m * r);
-            let cur = &done[k * m * r..];
-            for (f, g) in cur.chunks_exact(r).zip(rest[..m * r].chunks_exact_mut(r)) {
+            for a in 0..m {
+                let f = &data[(k * m + a) * r..(k * m + a + 1) * r];
                 let fe = dot(f, e);
                 ehat.push(fe);
                 for ((gj, fj), dj) in g.iter_mut().zip(f).zip(&e_end) {
                     *gj = fj + fe * dj;
                 }
-                let gy = dot(g, y);
+                let gy = dot(&g, y);
                 for (gj, yj) in g.iter_mut().zip(y) {
                     *gj -= gy * yj;
                 }
+                data.extend_from_slice(&g);
             }
         }
         (Self { r, data }, ehat)
@@ -1573,6 +1584,18 @@ fn bilinear_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, a: &Vf<M>, b: &Vf<M>) -
     vf(|i| c1 * e[i] + sc.dsinc * (ae * b[i] + be * a[i]))
 }
 
+/// `v[k] = value`, or `v.push(value)` when `k == v.len()`: the first factorisation fills the
+/// solver's rows in order, so they are not zeroed first.
+#[inline(always)]
+fn put<T>(v: &mut Vec<T>, k: usize, value: T) {
+    if let Some(slot) = v.get_mut(k) {
+        *slot = value;
+    } else {
+        debug_assert_eq!(k, v.len(), "rows are filled in order");
+        v.push(value);
+    }
+}
+
 /// `worst² = max(worst², |f|²/scale²)`, the division only for a row that raises it (infinite
 /// for a non-finite residual).
 #[inline(always)]
@@ -1817,17 +1840,19 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let fixed = g.fixed.as_ref().map(|(g0, g1)| (arr(g0), arr(g1)));
         let n = g.n;
         let zero = [[0.0; M]; M];
+        // The rows are filled in order by the first factorisation ([`put`]).
+        let rows = || Vec::with_capacity(n);
         Self {
             g,
             e,
             hol,
             fixed,
-            l: vec![zero; n],
-            dinv: vec![zero; n],
-            gm: vec![zero; n],
-            scale2: vec![0.0; n],
-            dev: vec![[0.0; M]; n],
-            border: if g.closed { vec![zero; n] } else { Vec::new() },
+            l: rows(),
+            dinv: rows(),
+            gm: rows(),
+            scale2: Vec::with_capacity(n),
+            dev: Vec::with_capacity(n),
+            border: if g.closed { rows() } else { Vec::new() },
             a_last: zero,
             d_last: zero,
             c_last: zero,
@@ -2039,8 +2064,8 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let row = self.row(k, first, last, x, w_prev, &w_next);
         *w_prev = w_next;
         raise_worst(&row.f, row.scale2, worst2);
-        self.scale2[k] = row.scale2;
-        self.dev[k] = [0.0; M];
+        put(&mut self.scale2, k, row.scale2);
+        put(&mut self.dev, k, [0.0; M]);
         if g.closed && last {
             // The Schur row: kept whole, eliminated in `back`.
             z[k] = row.f;
@@ -2062,9 +2087,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                     d[i][j] -= t[i][j];
                 }
             }
-            self.l[k] = s_left(e, sc.sinc, sc.c2, &self.dinv[k - 1]);
-        } else if !first {
-            self.l[k] = [[0.0; M]; M];
+            put(&mut self.l, k, s_left(e, sc.sinc, sc.c2, &self.dinv[k - 1]));
+        } else {
+            put(&mut self.l, k, [[0.0; M]; M]);
         }
         let dinv = invertf(&d).ok_or(Singular)?;
         let merge = g.closed && k + 2 == n;
@@ -2083,15 +2108,16 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                     }
                 }
             }
-            self.border[k] = b;
+            put(&mut self.border, k, b);
         }
-        self.gm[k] = if fixed || merge || last {
+        let gm = if fixed || merge || last {
             [[0.0; M]; M]
         } else {
             let (e, sc) = (&self.e[k], &g.seg[k]);
             s_right(&dinv, e, sc.inv_sinc, sc.c2)
         };
-        self.dinv[k] = dinv;
+        put(&mut self.gm, k, gm);
+        put(&mut self.dinv, k, dinv);
         z[k] = row.f;
         if !first {
             self.eliminate_row(k, z);
