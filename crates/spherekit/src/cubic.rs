@@ -1796,10 +1796,8 @@ struct FixedSolver<'g, const M: usize> {
     e: Vec<Vf<M>>,
     hol: Bf<M>,
     fixed: Option<(Vf<M>, Vf<M>)>,
-    /// Per row of the block tridiagonal part: `Lₖ = Aₖ D̃ₖ₋₁⁻¹`, `D̃ₖ⁻¹` and `Gₖ = D̃ₖ⁻¹ Cₖ`.
-    l: Vec<Bf<M>>,
-    dinv: Vec<Bf<M>>,
-    gm: Vec<Bf<M>>,
+    /// Per row of the block tridiagonal part, its factors.
+    fac: Vec<RowFactors<M>>,
     /// Per row, from the last evaluation of the equations (the factorising sweep): the squared
     /// size of the row's terms, and `Wₖ`, the end velocity `S⁻¹H̃ᵀ(xₖ − x̄ₖ)` of the row's
     /// nonlinear term at the deviation of `x` from the point `x̄` of the factorisation.
@@ -1820,6 +1818,13 @@ struct Row<const M: usize> {
     f: Vf<M>,
     scale2: f64,
     d: Bf<M>,
+}
+
+/// The block LU factors of one row: `Lₖ = Aₖ D̃ₖ₋₁⁻¹`, `D̃ₖ⁻¹` and `Gₖ = D̃ₖ⁻¹ Cₖ`.
+struct RowFactors<const M: usize> {
+    l: Bf<M>,
+    dinv: Bf<M>,
+    gm: Bf<M>,
 }
 
 /// The factorisation met a singular pivot block.
@@ -1856,18 +1861,19 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let n = g.n;
         let zero = [[0.0; M]; M];
         // The rows are filled in order by the first factorisation ([`put`]).
-        let rows = || Vec::with_capacity(n);
         Self {
             g,
             e,
             hol,
             fixed,
-            l: rows(),
-            dinv: rows(),
-            gm: rows(),
+            fac: Vec::with_capacity(n),
             scale2: Vec::with_capacity(n),
             dev: Vec::with_capacity(n),
-            border: if g.closed { rows() } else { Vec::new() },
+            border: if g.closed {
+                Vec::with_capacity(n)
+            } else {
+                Vec::new()
+            },
             a_last: zero,
             d_last: zero,
             c_last: zero,
@@ -2094,25 +2100,25 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let fixed = (first || last) && self.fixed.is_some();
         let coupled_prev = !fixed && (!first || g.closed);
         let mut d = row.d;
-        if coupled_prev && !first {
-            let (e, sc) = (&self.e[k - 1], &g.seg[k - 1]);
-            let t = s_left(e, sc.sinc, sc.c2, &self.gm[k - 1]);
+        let l = if coupled_prev && !first {
+            let (e, sc, prev) = (&self.e[k - 1], &g.seg[k - 1], &self.fac[k - 1]);
+            let t = s_left(e, sc.sinc, sc.c2, &prev.gm);
             for i in 0..M {
                 for j in 0..M {
                     d[i][j] -= t[i][j];
                 }
             }
-            put(&mut self.l, k, s_left(e, sc.sinc, sc.c2, &self.dinv[k - 1]));
+            s_left(e, sc.sinc, sc.c2, &prev.dinv)
         } else {
-            put(&mut self.l, k, [[0.0; M]; M]);
-        }
+            [[0.0; M]; M]
+        };
         let dinv = invertf(&d).ok_or(Singular)?;
         let merge = g.closed && k + 2 == n;
         if g.closed {
             let mut b = if first {
                 self.a_block(k, true)
             } else {
-                let t = mat_mulf(&self.l[k], &self.border[k - 1]);
+                let t = mat_mulf(&l, &self.border[k - 1]);
                 bf(|i, j| -t[i][j])
             };
             if merge {
@@ -2131,8 +2137,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             let (e, sc) = (&self.e[k], &g.seg[k]);
             s_right(&dinv, e, sc.inv_sinc, sc.c2)
         };
-        put(&mut self.gm, k, gm);
-        put(&mut self.dinv, k, dinv);
+        put(&mut self.fac, k, RowFactors { l, dinv, gm });
         z[k] = row.f;
         if !first {
             self.eliminate_row(k, z);
@@ -2143,7 +2148,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// `zₖ ← zₖ − Lₖ zₖ₋₁`.
     #[inline(always)]
     fn eliminate_row(&self, k: usize, z: &mut [Vf<M>]) {
-        let t = mat_vecf(&self.l[k], &z[k - 1]);
+        let t = mat_vecf(&self.fac[k].l, &z[k - 1]);
         for a in 0..M {
             z[k][a] -= t[a];
         }
@@ -2305,11 +2310,11 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     fn finish_border(&mut self) -> Result<(), Singular> {
         let n = self.g.n;
         let rows = n - 1;
-        let mut next = mat_mulf(&self.dinv[rows - 1], &self.border[rows - 1]);
+        let mut next = mat_mulf(&self.fac[rows - 1].dinv, &self.border[rows - 1]);
         self.border[rows - 1] = next;
         for k in (0..rows - 1).rev() {
-            let mut zk = mat_mulf(&self.dinv[k], &self.border[k]);
-            let t = mat_mulf(&self.gm[k], &next);
+            let mut zk = mat_mulf(&self.fac[k].dinv, &self.border[k]);
+            let t = mat_mulf(&self.fac[k].gm, &next);
             for i in 0..M {
                 for j in 0..M {
                     zk[i][j] -= t[i][j];
@@ -2335,14 +2340,15 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     fn back(&mut self, z: &mut [Vf<M>], x: &mut [Vf<M>]) {
         let n = self.g.n;
         if !self.g.closed {
-            let mut next = mat_vecf(&self.dinv[n - 1], &z[n - 1]);
+            let mut next = mat_vecf(&self.fac[n - 1].dinv, &z[n - 1]);
             for a in 0..M {
                 x[n - 1][a] -= next[a];
             }
             z[n - 1] = self.update(n - 1, &next);
             for k in (0..n - 1).rev() {
-                let y = mat_vecf(&self.dinv[k], &z[k]);
-                let t = mat_vecf(&self.gm[k], &next);
+                let f = &self.fac[k];
+                let y = mat_vecf(&f.dinv, &z[k]);
+                let t = mat_vecf(&f.gm, &next);
                 let d: Vf<M> = vf(|a| y[a] - t[a]);
                 for a in 0..M {
                     x[k][a] -= d[a];
@@ -2353,11 +2359,12 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             return;
         }
         let rows = n - 1;
-        let mut next = mat_vecf(&self.dinv[rows - 1], &z[rows - 1]);
+        let mut next = mat_vecf(&self.fac[rows - 1].dinv, &z[rows - 1]);
         z[rows - 1] = next;
         for k in (0..rows - 1).rev() {
-            let y = mat_vecf(&self.dinv[k], &z[k]);
-            let t = mat_vecf(&self.gm[k], &next);
+            let f = &self.fac[k];
+            let y = mat_vecf(&f.dinv, &z[k]);
+            let t = mat_vecf(&f.gm, &next);
             next = vf(|a| y[a] - t[a]);
             z[k] = next;
         }
