@@ -592,7 +592,7 @@ impl<P: Manifold> CubicSpline<P> {
     }
 
     /// The point and velocity of segment `i` at `s`, with what the acceleration needs.
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn local(&self, i: usize, s: f64) -> Local<P> {
         let g = &self.segments[i];
         let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
@@ -835,7 +835,7 @@ impl Frames {
         with_dim!(r, |d| Self::build(d, xs, es, sin_cos, closed))
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn build<D: Dim>(
         d: D,
         xs: &[f64],
@@ -903,7 +903,7 @@ impl Frames {
         with_dim!(self.r, |d| self.combine_in(d, k, c, out));
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn combine_in<D: Dim>(&self, d: D, k: usize, c: &[f64], out: &mut [f64]) {
         let r = d.get();
         let out = &mut out[..r];
@@ -992,14 +992,14 @@ struct Dynamic(usize);
 struct Const<const N: usize>;
 
 impl<const N: usize> Dim for Const<N> {
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn get(self) -> usize {
         N
     }
 }
 
 impl Dim for Dynamic {
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn get(self) -> usize {
         self.0
     }
@@ -1532,13 +1532,17 @@ impl Geometry {
     }
 }
 
+// The solver's small helpers are inlined by force natively (their calls cost more than their
+// arithmetic); the wasm build, optimised for size, leaves inlining to the compiler (15.5 KB of
+// the .wasm). Inlining changes no result: Rust contracts no float operations.
+
 /// An m-vector and an m × m block (row-major) for a fixed tangent dimension.
 type Vf<const M: usize> = [f64; M];
 type Bf<const M: usize> = [[f64; M]; M];
 
 /// `[f(0), …, f(M − 1)]`, always inlined (`vf` is not, in the solver's
 /// loops, and its call per vector cost more than the arithmetic).
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn vf<const M: usize>(f: impl Fn(usize) -> f64) -> Vf<M> {
     let mut out = [0.0; M];
     for (a, o) in out.iter_mut().enumerate() {
@@ -1548,7 +1552,7 @@ fn vf<const M: usize>(f: impl Fn(usize) -> f64) -> Vf<M> {
 }
 
 /// The block `[f(i, j)]`, as [`vf`].
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn bf<const M: usize>(f: impl Fn(usize, usize) -> f64) -> Bf<M> {
     let mut out = [[0.0; M]; M];
     for (i, row) in out.iter_mut().enumerate() {
@@ -1559,13 +1563,13 @@ fn bf<const M: usize>(f: impl Fn(usize, usize) -> f64) -> Bf<M> {
     out
 }
 
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn dotf<const M: usize>(a: &Vf<M>, b: &Vf<M>) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// `x ← S x`, as [`apply_s`].
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn apply_sf<const M: usize>(e: &Vf<M>, sigma: f64, x: &mut Vf<M>) {
     let c = (1.0 - sigma) * dotf(e, x);
     for (xi, ei) in x.iter_mut().zip(e) {
@@ -1574,7 +1578,7 @@ fn apply_sf<const M: usize>(e: &Vf<M>, sigma: f64, x: &mut Vf<M>) {
 }
 
 /// `T(u)` added to `y`, as [`add_t`]; returns `|T(u)|²`.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn add_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, u: &Vf<M>, y: &mut Vf<M>) -> f64 {
     let up = dotf(u, e);
     let uu = dotf(u, u);
@@ -1592,7 +1596,7 @@ fn add_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, u: &Vf<M>, y: &mut Vf<M>) ->
 
 /// The symmetric bilinear form of `T` (`T(u) = B(u, u)`, [`add_tf`]):
 /// `B(a, b) = κ(a·b − (a·ê)(b·ê))·ê + (sinc′ θ)·((a·ê)·b + (b·ê)·a − 2(a·ê)(b·ê)·ê)`.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn bilinear_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, a: &Vf<M>, b: &Vf<M>) -> Vf<M> {
     let (ae, be) = (dotf(a, e), dotf(b, e));
     let c1 = sc.kappa * (dotf(a, b) - ae * be) - 2.0 * sc.dsinc * ae * be;
@@ -1601,7 +1605,7 @@ fn bilinear_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, a: &Vf<M>, b: &Vf<M>) -
 
 /// `v[k] = value`, or `v.push(value)` when `k == v.len()`: the first factorisation fills the
 /// solver's rows in order, so they are not zeroed first.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn put<T>(v: &mut Vec<T>, k: usize, value: T) {
     if let Some(slot) = v.get_mut(k) {
         *slot = value;
@@ -1613,7 +1617,7 @@ fn put<T>(v: &mut Vec<T>, k: usize, value: T) {
 
 /// `worst² = max(worst², |f|²/scale²)`, the division only for a row that raises it (infinite
 /// for a non-finite residual).
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn raise_worst<const M: usize>(f: &Vf<M>, scale2: f64, worst2: &mut f64) {
     let fn2 = dotf(f, f);
     if fn2 > *worst2 * scale2 || !fn2.is_finite() {
@@ -1626,7 +1630,7 @@ fn raise_worst<const M: usize>(f: &Vf<M>, scale2: f64, worst2: &mut f64) {
 }
 
 /// `scale·(σ·I + (1 − σ)·ê êᵀ)`, as [`s_matrix`].
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn s_matrixf<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
     let mut out = [[0.0; M]; M];
     for i in 0..M {
@@ -1639,7 +1643,7 @@ fn s_matrixf<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
 }
 
 /// `scale·S·x` for a block `x`, `S = σ·I + (1 − σ)·ê êᵀ`, without forming `S`.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn s_left<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64, x: &Bf<M>) -> Bf<M> {
     let ex: Vf<M> = vf(|j| (0..M).map(|l| e[l] * x[l][j]).sum());
     let (a, b) = (scale * sigma, scale * (1.0 - sigma));
@@ -1647,14 +1651,14 @@ fn s_left<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64, x: &Bf<M>) -> Bf<M>
 }
 
 /// `scale·x·S` for a block `x`, as [`s_left`].
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn s_right<const M: usize>(x: &Bf<M>, e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
     let xe: Vf<M> = vf(|i| dotf(&x[i], e));
     let (a, b) = (scale * sigma, scale * (1.0 - sigma));
     bf(|i, j| a * x[i][j] + b * xe[i] * e[j])
 }
 
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn mat_mulf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
     let mut out = [[0.0; M]; M];
     for i in 0..M {
@@ -1670,7 +1674,7 @@ fn mat_mulf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
 }
 
 /// `a·bᵀ`.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn mat_mul_tf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
     let mut out = [[0.0; M]; M];
     for i in 0..M {
@@ -1681,7 +1685,7 @@ fn mat_mul_tf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
     out
 }
 
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn mat_vecf<const M: usize>(a: &Bf<M>, x: &Vf<M>) -> Vf<M> {
     let mut out = [0.0; M];
     for i in 0..M {
@@ -1698,7 +1702,7 @@ fn mat_vecf<const M: usize>(a: &Bf<M>, x: &Vf<M>) -> Vf<M> {
 /// `M ≤ 3` (branch-free, one division; the blocks are diagonally dominant, and a less accurate
 /// inverse would only slow Newton's convergence, never change the residual it stops at), the
 /// elimination of [`invert`] otherwise; `None` if singular.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn invertf<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
     let mut out = [[0.0; M]; M];
     match M {
@@ -1740,7 +1744,7 @@ fn invertf<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
 }
 
 /// `a⁻¹` by the elimination of [`invert`]; `None` if singular.
-#[inline(always)]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn invert_gj<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
     let mut w = *a;
     let mut out = [[0.0; M]; M];
@@ -1882,7 +1886,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     }
 
     /// `Hᵀ·y`.
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn hol_t(&self, y: &Vf<M>) -> Vf<M> {
         vf(|b| (0..M).map(|a| self.hol[a][b] * y[a]).sum())
     }
@@ -1906,7 +1910,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
 
     /// `S⁻¹ H̃ᵀ x_{seg+1}` (the end velocity of segment `seg` in its transported frame; the
     /// holonomy only across the seam).
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn end_velocity(&self, seg: usize, seam: bool, x: &[Vf<M>]) -> Vf<M> {
         let mut u = if seam { self.hol_t(&x[0]) } else { x[seg + 1] };
         apply_sf(&self.e[seg], self.g.seg[seg].inv_sinc, &mut u);
@@ -1916,7 +1920,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// Row `k` at `x`, given the end velocities of the segments before (`w_prev`) and after
     /// (`w_next`) the key; `first` and `last` say whether `k` is the first or last key (the
     /// callers pass constants, so the interior rows have no branches).
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn row(
         &self,
         k: usize,
@@ -2058,7 +2062,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         self.sweep_row(k, first, !first, x, z, w_prev, worst2)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     #[allow(
         clippy::too_many_arguments,
         reason = "the state carried from row to row"
@@ -2146,7 +2150,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     }
 
     /// `zₖ ← zₖ − Lₖ zₖ₋₁`.
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn eliminate_row(&self, k: usize, z: &mut [Vf<M>]) {
         let t = mat_vecf(&self.fac[k].l, &z[k - 1]);
         for a in 0..M {
@@ -2185,7 +2189,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     ///
     /// exactly; `Wₖ` becomes `W − s`. Rows without the term (a fixed row, the first row of an
     /// open curve) are linear and solved exactly: 0.
-    #[inline(always)]
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn update(&mut self, k: usize, d: &Vf<M>) -> Vf<M> {
         let g = self.g;
         let (p, seam) = if k > 0 {
