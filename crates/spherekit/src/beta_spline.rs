@@ -390,24 +390,14 @@ impl<P: Manifold> BetaSpline<P> {
             });
         }
         let count = points.len();
-        let beta1 = params.beta1.expand("beta1", count, true)?;
-        let beta2 = params.beta2.expand("beta2", count, false)?;
-        let solver = params.solver;
-        let tolerance = positive(params.tolerance, "tolerance", 1e-26)?;
-        let residual_tolerance = positive(
-            params.residual_tolerance,
-            "residual_tolerance",
-            solver.default_residual_tolerance(),
-        )?;
-        let max_iterations = params
-            .max_iterations
-            .unwrap_or(solver.default_max_iterations());
-        if max_iterations == 0 {
-            return Err(SplineError::InvalidParameter {
-                name: "max_iterations",
-                reason: "must be at least 1".into(),
-            });
-        }
+        let checked = Checked::new(params, count)?;
+        let Checked {
+            solver,
+            tolerance,
+            residual_tolerance,
+            max_iterations,
+            ..
+        } = checked;
         let dim = points[0].to_vector().dim();
         if let Some(index) = points.iter().position(|q| q.to_vector().dim() != dim) {
             return Err(SplineError::InvalidPoint {
@@ -435,23 +425,8 @@ impl<P: Manifold> BetaSpline<P> {
         if params.interpolate && closed && last.dist(first) <= COINCIDENT_TOLERANCE {
             return Err(SplineError::CoincidentClosing);
         }
-        let gamma: Vec<f64> = beta1
-            .iter()
-            .zip(&beta2)
-            .map(|(&b1, &b2)| gamma(b1, b2))
-            .collect();
-        let shape = shape_constants(&beta1, &gamma, closed);
-        let in_unit = |v: &f64| (0.0..=1.0).contains(v);
-        if !(shape.eta.iter().all(in_unit)
-            && shape.omega.iter().all(in_unit)
-            && shape.delta.iter().all(in_unit))
-        {
-            // Only for extreme values (β₁ beyond about 1e150), where β₁²·γ overflows.
-            return Err(SplineError::InvalidParameter {
-                name: "beta1",
-                reason: "is too large: the arc ratios of eqs. (4)–(5) overflow".into(),
-            });
-        }
+        let (beta1, beta2) = (checked.beta1, checked.beta2);
+        let (gamma, shape) = shape_of(&beta1, &beta2, closed)?;
         let (aux, info) = if params.interpolate && count > 2 {
             let settings = Settings {
                 change_tolerance: tolerance,
@@ -670,6 +645,71 @@ impl<P: Manifold> BetaSpline<P> {
         }
         (i.min(n - 1), s)
     }
+}
+
+/// The parameters of [`BetaParams`] checked and expanded for `count` points. Not generic over
+/// the point type (one copy for every sphere).
+struct Checked {
+    beta1: Vec<f64>,
+    beta2: Vec<f64>,
+    solver: BetaSolver,
+    tolerance: f64,
+    residual_tolerance: f64,
+    max_iterations: usize,
+}
+
+impl Checked {
+    fn new(params: &BetaParams, count: usize) -> Result<Self, SplineError> {
+        let beta1 = params.beta1.expand("beta1", count, true)?;
+        let beta2 = params.beta2.expand("beta2", count, false)?;
+        let solver = params.solver;
+        let tolerance = positive(params.tolerance, "tolerance", 1e-26)?;
+        let residual_tolerance = positive(
+            params.residual_tolerance,
+            "residual_tolerance",
+            solver.default_residual_tolerance(),
+        )?;
+        let max_iterations = params
+            .max_iterations
+            .unwrap_or(solver.default_max_iterations());
+        if max_iterations == 0 {
+            return Err(SplineError::InvalidParameter {
+                name: "max_iterations",
+                reason: "must be at least 1".into(),
+            });
+        }
+        Ok(Self {
+            beta1,
+            beta2,
+            solver,
+            tolerance,
+            residual_tolerance,
+            max_iterations,
+        })
+    }
+}
+
+/// `γ` per point and the shape constants, or the error when `β₁` is so large that they
+/// overflow. Not generic over the point type.
+fn shape_of(beta1: &[f64], beta2: &[f64], closed: bool) -> Result<(Vec<f64>, Shape), SplineError> {
+    let gamma: Vec<f64> = beta1
+        .iter()
+        .zip(beta2)
+        .map(|(&b1, &b2)| gamma(b1, b2))
+        .collect();
+    let shape = shape_constants(beta1, &gamma, closed);
+    let in_unit = |v: &f64| (0.0..=1.0).contains(v);
+    if !(shape.eta.iter().all(in_unit)
+        && shape.omega.iter().all(in_unit)
+        && shape.delta.iter().all(in_unit))
+    {
+        // Only for extreme values (β₁ beyond about 1e150), where β₁²·γ overflows.
+        return Err(SplineError::InvalidParameter {
+            name: "beta1",
+            reason: "is too large: the arc ratios of eqs. (4)–(5) overflow".into(),
+        });
+    }
+    Ok((gamma, shape))
 }
 
 /// γ of eq. (7).
