@@ -107,9 +107,7 @@ fuzz seconds="600" target="all":
 # ---- web: wasm bindings, playground, docs widget -------------------------------------------
 
 # Build the wasm package into web/pkg (installs wasm-pack, wasm-bindgen, wasm-opt when missing),
-# and next to it the files the page loads instead of the .wasm carrying them: presets.json, the
-# example menu, from the golden scenes (scripts/web_presets.py), and glyphs.bin, the renderer's
-# font (the wasm build's `set_font`; native builds have it built in).
+# and web/pkg/presets.json, the example menu, from the golden scenes (scripts/web_presets.py).
 # Two size flags for this build only (44 KB of the .wasm, BENCHMARKS.md section 6), which stable
 # rustc accepts with RUSTC_BOOTSTRAP: `-Z location-detail=none` drops the file/line/column of
 # panic locations, `-Z fmt-debug=shallow` makes derived `Debug` print the type or variant name
@@ -121,7 +119,6 @@ web:
     CARGO_PROFILE_RELEASE_OPT_LEVEL=z CARGO_PROFILE_RELEASE_LTO=true CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1 \
     CARGO_PROFILE_RELEASE_PANIC=abort bash scripts/setup-web.sh wasm-pack build crates/spherekit-wasm --release --target web --out-dir ../../web/pkg --no-typescript --no-pack
     python3 scripts/web_presets.py
-    cp crates/spherekit-render/fonts/glyphs.bin web/pkg/glyphs.bin
 
 # Build, then serve the playground on http://127.0.0.1:8000/ (docs widget: /docs.html)
 serve port="8000": web

@@ -10,14 +10,9 @@ import init, * as sk from './pkg/spherekit_wasm.js';
 import { drawBodies } from './draw.js';
 
 let loading = null;
-/** Loads the wasm module and the renderer's glyph outlines once for all widgets on the page. */
+/** Loads the wasm module once for all widgets on the page. */
 function ready() {
-  loading ??= (async () => {
-    await init({ module_or_path: new URL('./pkg/spherekit_wasm_bg.wasm', import.meta.url) });
-    const font = await fetch(new URL('./pkg/glyphs.bin', import.meta.url));
-    if (!font.ok) throw new Error(`pkg/glyphs.bin: HTTP ${font.status}`);
-    sk.set_font(new Uint8Array(await font.arrayBuffer()));
-  })();
+  loading ??= init({ module_or_path: new URL('./pkg/spherekit_wasm_bg.wasm', import.meta.url) });
   return loading;
 }
 

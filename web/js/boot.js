@@ -152,10 +152,6 @@ function toViewport(q) {
 
 async function main() {
   await init();
-  // The renderer's glyph outlines, a file next to the wasm (`just web` copies it there).
-  const font = await fetch(new URL('../pkg/glyphs.bin', import.meta.url));
-  if (!font.ok) throw new Error(`pkg/glyphs.bin: HTTP ${font.status} (run \`just web\`)`);
-  sk.set_font(new Uint8Array(await font.arrayBuffer()));
   state.methods = JSON.parse(sk.methods());
   // The golden scenes, written next to the wasm package by `just web` (scripts/web_presets.py).
   const presets = await fetch(new URL('../pkg/presets.json', import.meta.url));

@@ -51,7 +51,6 @@ pub use camera::{Camera, turn_towards, yaw_pitch};
 use canvas::{Canvas, LineStyle, Rgb, Shape, Sketch};
 use stroke::Strokes;
 use surface::{Raster, Surface, Svg};
-pub use text::{FontError, check_font, font_loaded, set_font};
 
 /// The smallest and largest image sizes [`render`] accepts (pixels, the sphere's square).
 pub const SIZE_RANGE: (u32, u32) = (16, 4096);

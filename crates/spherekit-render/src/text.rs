@@ -1,9 +1,8 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Text: the outlines of a DejaVu Sans subset (`fonts/`, Bitstream Vera licence; built in
-//! natively, given at run time in wasm with [`set_font`]), laid out by their advances and
-//! rasterized here by exact signed-area accumulation.
+//! Text: the outlines of an embedded DejaVu Sans subset (`fonts/`, Bitstream Vera licence),
+//! laid out by their advances and rasterized here by exact signed-area accumulation.
 //!
 //! The rasterizer is the accumulation method of font-rs (Raph Levien, 2016: each line segment
 //! adds the signed area it covers to the cells of its rows; a prefix sum along each row gives
@@ -18,106 +17,8 @@ use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::rc::Rc;
 
-/// The subset's outlines (see `scripts/font_subset.py` for the format), built in natively.
-#[cfg(not(target_arch = "wasm32"))]
-fn glyphs() -> &'static [u8] {
-    include_bytes!("../fonts/glyphs.bin")
-}
-
-/// In wasm the outlines are not built in (they would be 22 KB of the .wasm): the page gives
-/// them once, from the same file, with [`set_font`].
-#[cfg(target_arch = "wasm32")]
-static FONT: std::sync::OnceLock<&'static [u8]> = std::sync::OnceLock::new();
-
-/// The outlines given to [`set_font`]; before that a subset without glyphs (every character
-/// blank, with no advance), so that nothing panics or divides by zero.
-#[cfg(target_arch = "wasm32")]
-fn glyphs() -> &'static [u8] {
-    /// `SKF2`, 2048 units per em, ascent and descent 0, no glyphs.
-    const NONE: &[u8] = b"SKF2\x00\x08\x00\x00\x00\x00\x00\x00";
-    FONT.get().copied().unwrap_or(NONE)
-}
-
-/// Takes the glyph outlines (the bytes of `crates/spherekit-render/fonts/glyphs.bin`, which
-/// `just web` copies to `web/pkg/glyphs.bin`) for every later layout and text, once. The wasm
-/// build has no font of its own; a native build has this one built in (as if set already).
-///
-/// # Errors
-///
-/// A [`FontError`] for bytes that are not a glyph subset ([`check_font`]), or when a different
-/// font was given before (the same bytes again are accepted).
-pub fn set_font(bytes: Vec<u8>) -> Result<(), FontError> {
-    check_font(&bytes)?;
-    #[cfg(target_arch = "wasm32")]
-    if FONT.get().is_none() {
-        let _ = FONT.set(Box::leak(bytes.into_boxed_slice()));
-        return Ok(());
-    }
-    if *glyphs() == *bytes {
-        Ok(())
-    } else {
-        Err(FontError("a different font is already set"))
-    }
-}
-
-/// Whether the renderer has its glyph outlines: natively always, in wasm after [`set_font`].
-#[must_use]
-pub fn font_loaded() -> bool {
-    #[cfg(target_arch = "wasm32")]
-    return FONT.get().is_some();
-    #[cfg(not(target_arch = "wasm32"))]
-    true
-}
-
-/// Why bytes are not a glyph subset of `scripts/font_subset.py`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FontError(&'static str);
-
-impl core::fmt::Display for FontError {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "font: {}", self.0)
-    }
-}
-
-impl core::error::Error for FontError {}
-
-/// Checks that `b` is a glyph subset as `scripts/font_subset.py` writes it, so that reading it
-/// cannot go out of bounds: the `SKF2` header, a non-zero em, a glyph table inside the bytes
-/// with its code points increasing, and every outline inside the bytes.
-///
-/// # Errors
-///
-/// A [`FontError`] saying which of these fails.
-pub fn check_font(b: &[u8]) -> Result<(), FontError> {
-    if b.len() < HEADER {
-        return Err(FontError("shorter than its 12-byte header"));
-    }
-    if &b[..4] != b"SKF2" {
-        return Err(FontError("not a glyph subset (no SKF2 header)"));
-    }
-    if u16_at(b, 4) == 0 {
-        return Err(FontError("zero units per em"));
-    }
-    let count = usize::from(u16_at(b, 10));
-    let stream = HEADER + count * ENTRY;
-    if b.len() < stream {
-        return Err(FontError("its glyph table runs past the end"));
-    }
-    let mut last = None;
-    for k in 0..count {
-        let e = HEADER + k * ENTRY;
-        let cp = u32_at(b, e);
-        if last.is_some_and(|l| l >= cp) {
-            return Err(FontError("its code points are not increasing"));
-        }
-        last = Some(cp);
-        let end = u32_at(b, e + 6) as usize + usize::from(u16_at(b, e + 10));
-        if end > b.len() - stream {
-            return Err(FontError("an outline runs past the end"));
-        }
-    }
-    Ok(())
-}
+/// The subset's outlines (see `scripts/font_subset.py` for the format).
+static GLYPHS: &[u8] = include_bytes!("../fonts/glyphs.bin");
 
 const HEADER: usize = 12;
 const ENTRY: usize = 12;
@@ -132,7 +33,7 @@ fn u32_at(b: &[u8], i: usize) -> u32 {
 
 /// The font's units per em.
 fn units_per_em() -> f32 {
-    f32::from(u16_at(glyphs(), 4))
+    f32::from(u16_at(GLYPHS, 4))
 }
 
 /// The height of a capital letter as a fraction of the em (DejaVu Sans: 1493 / 2048).
@@ -153,23 +54,22 @@ fn glyph(c: char) -> Glyph {
 }
 
 fn lookup(c: char) -> Option<Glyph> {
-    let glyphs = glyphs();
-    let count = usize::from(u16_at(glyphs, 10));
+    let count = usize::from(u16_at(GLYPHS, 10));
     let stream = HEADER + count * ENTRY;
     let (mut lo, mut hi) = (0, count);
     while lo < hi {
         let mid = (lo + hi) / 2;
         let e = HEADER + mid * ENTRY;
-        let cp = u32_at(glyphs, e);
+        let cp = u32_at(GLYPHS, e);
         match cp.cmp(&u32::from(c)) {
             core::cmp::Ordering::Less => lo = mid + 1,
             core::cmp::Ordering::Greater => hi = mid,
             core::cmp::Ordering::Equal => {
-                let off = stream + u32_at(glyphs, e + 6) as usize;
-                let len = usize::from(u16_at(glyphs, e + 10));
+                let off = stream + u32_at(GLYPHS, e + 6) as usize;
+                let len = usize::from(u16_at(GLYPHS, e + 10));
                 return Some(Glyph {
-                    advance: u16_at(glyphs, e + 4),
-                    commands: glyphs.get(off..off + len)?,
+                    advance: u16_at(GLYPHS, e + 4),
+                    commands: GLYPHS.get(off..off + len)?,
                 });
             }
         }
@@ -477,41 +377,6 @@ pub(crate) fn layout(s: &str, px: f32, x: f32) -> Vec<(char, i32, u8)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn check_font_accepts_the_subset_and_names_what_is_wrong_with_other_bytes() {
-        let font = include_bytes!("../fonts/glyphs.bin");
-        assert_eq!(check_font(font), Ok(()));
-        let fails = |b: &[u8]| check_font(b).unwrap_err().to_string();
-        assert_eq!(fails(&font[..11]), "font: shorter than its 12-byte header");
-        assert_eq!(
-            fails(b"PNG\0\0\x08\0\0\0\0\0\0"),
-            "font: not a glyph subset (no SKF2 header)"
-        );
-        assert_eq!(fails(b"SKF2\0\0\0\0\0\0\0\0"), "font: zero units per em");
-        assert_eq!(
-            fails(&font[..100]),
-            "font: its glyph table runs past the end"
-        );
-        assert_eq!(
-            fails(&font[..font.len() - 1]),
-            "font: an outline runs past the end"
-        );
-        let mut swapped = font.to_vec();
-        swapped[HEADER..HEADER + 4].copy_from_slice(&u32::MAX.to_le_bytes());
-        assert_eq!(fails(&swapped), "font: its code points are not increasing");
-        // Natively the subset is built in: set already, and only to itself.
-        assert!(font_loaded());
-        assert_eq!(set_font(font.to_vec()), Ok(()));
-        assert_eq!(
-            set_font(b"SKF2\0\x08\0\0\0\0\0\0".to_vec())
-                .unwrap_err()
-                .to_string(),
-            "font: a different font is already set"
-        );
-        // An empty subset is a font (blank text), as the wasm build has before `set_font`.
-        assert_eq!(check_font(b"SKF2\0\x08\0\0\0\0\0\0"), Ok(()));
-    }
 
     #[test]
     fn the_subset_has_the_characters_the_figures_use() {

@@ -9,8 +9,7 @@
 //! - Free functions evaluate a scene given as JSON text: [`methods`] (the registry, parameter
 //!   schemas included), [`validate`], [`sample`] (the `spherekit sample` output), [`sample_at`]
 //!   (the same at given parameters),
-//!   [`sample_array`] (one field as a `Float64Array`), [`continuity`] and [`render_rgba`]
-//!   (after [`set_font`]: the renderer's glyph outlines are a file next to the .wasm).
+//!   [`sample_array`] (one field as a `Float64Array`), [`continuity`] and [`render_rgba`].
 //! - [`Playground`] is the page's stateful handle on a [`Document`]: it rebuilds only the
 //!   curves an edit touched (a camera change only re-renders), and draws into a canvas.
 //!
@@ -50,8 +49,6 @@ pub enum InputError {
     NoCurve(usize),
     /// The canvas has no 2D context or refused the image.
     NoContext,
-    /// A render before [`set_font`].
-    NoFont,
 }
 
 impl fmt::Display for InputError {
@@ -65,10 +62,6 @@ impl fmt::Display for InputError {
             ),
             Self::NoCurve(i) => write!(f, "curves[{i}]: there is no such curve"),
             Self::NoContext => write!(f, "canvas: no 2D context"),
-            Self::NoFont => write!(
-                f,
-                "font: not loaded (call set_font with the bytes of pkg/glyphs.bin first)"
-            ),
         }
     }
 }
@@ -83,28 +76,6 @@ pub fn start() {
 
 fn js(e: impl fmt::Display) -> JsError {
     JsError::new(&e.to_string())
-}
-
-/// Gives the renderer its glyph outlines: the bytes of `pkg/glyphs.bin` (which `just web`
-/// copies from `crates/spherekit-render/fonts/`), once, before the first render; the .wasm
-/// does not carry them.
-///
-/// # Errors
-///
-/// The renderer's [`FontError`](spherekit_render::FontError) for bytes that are not the glyph
-/// subset, or for a different font than the one already given.
-#[wasm_bindgen]
-pub fn set_font(bytes: Vec<u8>) -> Result<(), JsError> {
-    spherekit_render::set_font(bytes).map_err(js)
-}
-
-/// [`InputError::NoFont`] until [`set_font`] has been called.
-fn font_loaded() -> Result<(), InputError> {
-    if spherekit_render::font_loaded() {
-        Ok(())
-    } else {
-        Err(InputError::NoFont)
-    }
 }
 
 /// A unit quaternion from `[w, x, y, z]`.
@@ -306,10 +277,9 @@ fn report(curves: &[BuiltCurve]) -> Value {
 ///
 /// # Errors
 ///
-/// The CLI's message for a bad scene, view or size; [`InputError::NoFont`] before [`set_font`].
+/// The CLI's message for a bad scene, view or size.
 #[wasm_bindgen]
 pub fn render_rgba(scene: &str, size: u32) -> Result<Vec<u8>, JsError> {
-    font_loaded()?;
     let (scene, curves) = load(scene).map_err(js)?;
     let pixmap = render_built(&scene, &curves, size).map_err(js)?;
     Ok(straight_rgba(pixmap))
@@ -927,9 +897,8 @@ impl Playground {
     ///
     /// # Errors
     ///
-    /// The CLI's message for a bad view or size; [`InputError::NoFont`] before [`set_font`].
+    /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
-        font_loaded()?;
         let (scene, curves) = (self.doc.scene(), self.doc.curves());
         let key = layout_key(&self.doc.to_json(), size);
         let prepared = match self.prepared.take() {
@@ -956,8 +925,7 @@ impl Playground {
     ///
     /// # Errors
     ///
-    /// The CLI's message for a bad view or size; a canvas without a 2D context;
-    /// [`InputError::NoFont`] before [`set_font`].
+    /// The CLI's message for a bad view or size; a canvas without a 2D context.
     pub fn draw(&mut self, canvas: &web_sys::HtmlCanvasElement, size: u32) -> Result<(), JsError> {
         let h = self.render(size)?;
         let w = self.width;

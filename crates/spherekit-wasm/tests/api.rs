@@ -6,8 +6,7 @@
 #![cfg(target_arch = "wasm32")]
 
 use spherekit_wasm::{
-    Playground, continuity, methods, render_rgba, sample, sample_array, sample_at, set_font,
-    validate,
+    Playground, continuity, methods, render_rgba, sample, sample_array, sample_at, validate,
 };
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -22,26 +21,6 @@ fn message(e: wasm_bindgen::JsError) -> String {
         .ok()
         .and_then(|m| m.as_string())
         .unwrap_or_default()
-}
-
-/// Gives the renderer its glyphs, as the page does (the same bytes again are accepted).
-fn font() {
-    set_font(include_bytes!("../../spherekit-render/fonts/glyphs.bin").to_vec()).unwrap();
-}
-
-#[wasm_bindgen_test]
-fn set_font_takes_the_glyph_subset_once() {
-    font();
-    font();
-    assert_eq!(
-        message(set_font(b"SKF".to_vec()).unwrap_err()),
-        "font: shorter than its 12-byte header"
-    );
-    let empty = b"SKF2\0\x08\0\0\0\0\0\0".to_vec();
-    assert_eq!(
-        message(set_font(empty).unwrap_err()),
-        "font: a different font is already set"
-    );
 }
 
 #[wasm_bindgen_test]
@@ -101,7 +80,6 @@ fn the_playground_samples_its_built_curves_like_the_free_function() {
 
 #[wasm_bindgen_test]
 fn bad_input_gives_the_cli_message() {
-    font();
     let bad = r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,0,0]]}"#;
     assert_eq!(
         message(validate(bad).unwrap_err()),
@@ -172,7 +150,6 @@ fn continuity_reports_the_joints() {
 
 #[wasm_bindgen_test]
 fn render_has_the_plot_strip_on_s3() {
-    font();
     let rgba = render_rgba(S3, 64).unwrap();
     assert_eq!(rgba.len() % (64 * 4), 0, "whole rows, 64 wide");
     // The sphere's square, then the plot strip (a quarter of the size) and the legend.
@@ -184,7 +161,6 @@ fn render_has_the_plot_strip_on_s3() {
 
 #[wasm_bindgen_test]
 fn playground_rebuilds_only_what_changed() {
-    font();
     let mut pg = Playground::new(S2).unwrap();
     assert_eq!(pg.builds(), 1, "built once");
     pg.render(128).unwrap();
@@ -272,7 +248,6 @@ fn adding_and_removing_points_keeps_knots_and_per_joint_lists_in_step() {
 
 #[wasm_bindgen_test]
 fn picking_and_dragging_use_the_render_projection() {
-    font();
     let mut pg = Playground::new(S2).unwrap();
     let p = pg.point(0, 0).unwrap();
     let xy = pg.project(p[0], p[1], p[2], 200);
@@ -367,7 +342,6 @@ fn the_time_axis_eval_and_readout_use_the_curves_own_t() {
 
 #[wasm_bindgen_test]
 fn the_plot_axes_of_the_last_frame() {
-    font();
     let mut pg = Playground::new(S3).unwrap();
     assert_eq!(pg.plot_axes(), "[]", "nothing rendered yet");
     pg.render(256).unwrap();
