@@ -106,7 +106,8 @@ fuzz seconds="600" target="all":
 
 # ---- web: wasm bindings, playground, docs widget -------------------------------------------
 
-# Build the wasm package into web/pkg (installs wasm-pack, wasm-bindgen, wasm-opt when missing).
+# Build the wasm package into web/pkg (installs wasm-pack, wasm-bindgen, wasm-opt when missing),
+# and web/pkg/presets.json, the example menu, from the golden scenes (scripts/web_presets.py).
 # Two size flags for this build only (44 KB of the .wasm, BENCHMARKS.md section 6), which stable
 # rustc accepts with RUSTC_BOOTSTRAP: `-Z location-detail=none` drops the file/line/column of
 # panic locations, `-Z fmt-debug=shallow` makes derived `Debug` print the type or variant name
@@ -117,6 +118,7 @@ web:
     RUSTC_BOOTSTRAP=1 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128 -Z location-detail=none -Z fmt-debug=shallow" \
     CARGO_PROFILE_RELEASE_OPT_LEVEL=z CARGO_PROFILE_RELEASE_LTO=true CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1 \
     CARGO_PROFILE_RELEASE_PANIC=abort bash scripts/setup-web.sh wasm-pack build crates/spherekit-wasm --release --target web --out-dir ../../web/pkg --no-typescript --no-pack
+    python3 scripts/web_presets.py
 
 # Build, then serve the playground on http://127.0.0.1:8000/ (docs widget: /docs.html)
 serve port="8000": web

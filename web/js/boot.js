@@ -153,7 +153,10 @@ function toViewport(q) {
 async function main() {
   await init();
   state.methods = JSON.parse(sk.methods());
-  state.presets = JSON.parse(sk.presets());
+  // The golden scenes, written next to the wasm package by `just web` (scripts/web_presets.py).
+  const presets = await fetch(new URL('../pkg/presets.json', import.meta.url));
+  if (!presets.ok) throw new Error(`pkg/presets.json: HTTP ${presets.status} (run \`just web\`)`);
+  state.presets = await presets.json();
   fillPresets();
   const fallback = state.presets.find((p) => p.name === FIRST) ?? state.presets[0];
   const fromHash = sceneFromHash();

@@ -1,4 +1,4 @@
-// The example menu: the golden scenes (sk.presets()) grouped by method, with readable names and
+// The example menu: the golden scenes (pkg/presets.json) grouped by method, with readable names and
 // one-line descriptions. A scene missing from EXAMPLES (a new golden) still appears, under its
 // method with its file name and the method's registry summary, so adding a method needs no edit
 // here.

@@ -37,8 +37,6 @@ use spherekit_scene::{
 use tiny_skia::Pixmap;
 use wasm_bindgen::prelude::*;
 
-include!(concat!(env!("OUT_DIR"), "/presets.rs"));
-
 /// A bad argument from the page that the scene format does not see.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
@@ -104,18 +102,6 @@ fn json_arg(text: &str) -> Result<Value, EditError> {
 #[must_use]
 pub fn methods() -> String {
     registry_json().to_string()
-}
-
-/// The example scenes (the golden-image scenes of `tests/golden`) as JSON:
-/// `[{ "name", "scene" }, …]` with each scene as JSON text.
-#[wasm_bindgen]
-#[must_use]
-pub fn presets() -> String {
-    let list: Vec<Value> = PRESETS
-        .iter()
-        .map(|(name, scene)| json!({ "name": name, "scene": scene }))
-        .collect();
-    Value::Array(list).to_string()
 }
 
 /// The body axes of an orientation `[w, x, y, z]` after rotation: `[x₁, y₁, z₁, x₂, …, z₃]`.

@@ -4,6 +4,7 @@
 //! The cubic spherical Beta spline on S^m with bias β₁ and tension β₂, and its interpolation
 //! solvers (Yang, Wang, Chen, Sun & He 2021; see `docs/references.md`).
 
+#[cfg(any(test, not(target_arch = "wasm32")))]
 use glam::{DVec3, DVec4};
 
 use crate::ambient::{Ambient, VecN};
@@ -389,24 +390,14 @@ impl<P: Manifold> BetaSpline<P> {
             });
         }
         let count = points.len();
-        let beta1 = params.beta1.expand("beta1", count, true)?;
-        let beta2 = params.beta2.expand("beta2", count, false)?;
-        let solver = params.solver;
-        let tolerance = positive(params.tolerance, "tolerance", 1e-26)?;
-        let residual_tolerance = positive(
-            params.residual_tolerance,
-            "residual_tolerance",
-            solver.default_residual_tolerance(),
-        )?;
-        let max_iterations = params
-            .max_iterations
-            .unwrap_or(solver.default_max_iterations());
-        if max_iterations == 0 {
-            return Err(SplineError::InvalidParameter {
-                name: "max_iterations",
-                reason: "must be at least 1".into(),
-            });
-        }
+        let checked = Checked::new(params, count)?;
+        let Checked {
+            solver,
+            tolerance,
+            residual_tolerance,
+            max_iterations,
+            ..
+        } = checked;
         let dim = points[0].to_vector().dim();
         if let Some(index) = points.iter().position(|q| q.to_vector().dim() != dim) {
             return Err(SplineError::InvalidPoint {
@@ -434,23 +425,8 @@ impl<P: Manifold> BetaSpline<P> {
         if params.interpolate && closed && last.dist(first) <= COINCIDENT_TOLERANCE {
             return Err(SplineError::CoincidentClosing);
         }
-        let gamma: Vec<f64> = beta1
-            .iter()
-            .zip(&beta2)
-            .map(|(&b1, &b2)| gamma(b1, b2))
-            .collect();
-        let shape = shape_constants(&beta1, &gamma, closed);
-        let in_unit = |v: &f64| (0.0..=1.0).contains(v);
-        if !(shape.eta.iter().all(in_unit)
-            && shape.omega.iter().all(in_unit)
-            && shape.delta.iter().all(in_unit))
-        {
-            // Only for extreme values (β₁ beyond about 1e150), where β₁²·γ overflows.
-            return Err(SplineError::InvalidParameter {
-                name: "beta1",
-                reason: "is too large: the arc ratios of eqs. (4)–(5) overflow".into(),
-            });
-        }
+        let (beta1, beta2) = (checked.beta1, checked.beta2);
+        let (gamma, shape) = shape_of(&beta1, &beta2, closed)?;
         let (aux, info) = if params.interpolate && count > 2 {
             let settings = Settings {
                 change_tolerance: tolerance,
@@ -671,6 +647,71 @@ impl<P: Manifold> BetaSpline<P> {
     }
 }
 
+/// The parameters of [`BetaParams`] checked and expanded for `count` points. Not generic over
+/// the point type (one copy for every sphere).
+struct Checked {
+    beta1: Vec<f64>,
+    beta2: Vec<f64>,
+    solver: BetaSolver,
+    tolerance: f64,
+    residual_tolerance: f64,
+    max_iterations: usize,
+}
+
+impl Checked {
+    fn new(params: &BetaParams, count: usize) -> Result<Self, SplineError> {
+        let beta1 = params.beta1.expand("beta1", count, true)?;
+        let beta2 = params.beta2.expand("beta2", count, false)?;
+        let solver = params.solver;
+        let tolerance = positive(params.tolerance, "tolerance", 1e-26)?;
+        let residual_tolerance = positive(
+            params.residual_tolerance,
+            "residual_tolerance",
+            solver.default_residual_tolerance(),
+        )?;
+        let max_iterations = params
+            .max_iterations
+            .unwrap_or(solver.default_max_iterations());
+        if max_iterations == 0 {
+            return Err(SplineError::InvalidParameter {
+                name: "max_iterations",
+                reason: "must be at least 1".into(),
+            });
+        }
+        Ok(Self {
+            beta1,
+            beta2,
+            solver,
+            tolerance,
+            residual_tolerance,
+            max_iterations,
+        })
+    }
+}
+
+/// `γ` per point and the shape constants, or the error when `β₁` is so large that they
+/// overflow. Not generic over the point type.
+fn shape_of(beta1: &[f64], beta2: &[f64], closed: bool) -> Result<(Vec<f64>, Shape), SplineError> {
+    let gamma: Vec<f64> = beta1
+        .iter()
+        .zip(beta2)
+        .map(|(&b1, &b2)| gamma(b1, b2))
+        .collect();
+    let shape = shape_constants(beta1, &gamma, closed);
+    let in_unit = |v: &f64| (0.0..=1.0).contains(v);
+    if !(shape.eta.iter().all(in_unit)
+        && shape.omega.iter().all(in_unit)
+        && shape.delta.iter().all(in_unit))
+    {
+        // Only for extreme values (β₁ beyond about 1e150), where β₁²·γ overflows.
+        return Err(SplineError::InvalidParameter {
+            name: "beta1",
+            reason: "is too large: the arc ratios of eqs. (4)–(5) overflow".into(),
+        });
+    }
+    Ok((gamma, shape))
+}
+
 /// γ of eq. (7).
 fn gamma(b1: f64, b2: f64) -> f64 {
     2.0 * (b1 + 1.0) / (b2 + 2.0 * b1 * (b1 + 1.0))
@@ -784,11 +825,19 @@ fn solve<P: Manifold>(
         .iter()
         .map(|v| basis.iter().map(|b| b.dot(v)).collect())
         .collect();
+    // Natively S² and S³ solve in `DVec3` and `DVec4`, without allocation. The wasm build runs
+    // every rank in `VecN` (one copy of the kernel in the .wasm instead of three): padded to
+    // the same 3 or 4 coordinates, it does the same operations on the same numbers in the same
+    // order, so the result is the same bits (`tests::the_kernel_gives_the_same_bits_in_vecn`).
+    #[cfg(not(target_arch = "wasm32"))]
     let (d, iterations, residual) = match rank {
         0..=3 => run::<DVec3>(&coords, rank, 3, shape, solver, settings, closed),
         4 => run::<DVec4>(&coords, rank, 4, shape, solver, settings, closed),
         _ => run::<VecN>(&coords, rank, rank, shape, solver, settings, closed),
     };
+    #[cfg(target_arch = "wasm32")]
+    let (d, iterations, residual) =
+        run::<VecN>(&coords, rank, rank.max(3), shape, solver, settings, closed);
     let fail = SolveError::NoConvergence {
         iterations,
         residual,
@@ -840,4 +889,73 @@ fn run<V: Coords>(
         .map(|v| (0..rank).map(|j| v.coord(j)).collect())
         .collect();
     (d, out.iterations, out.residual)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The wasm build solves S² and S³ in `VecN` padded to 3 and 4 coordinates; it must give
+    /// exactly what the native `DVec3` and `DVec4` kernels give.
+    #[test]
+    fn the_kernel_gives_the_same_bits_in_vecn() {
+        let s2 = vec![
+            vec![1.0, 0.0, 0.2],
+            vec![0.3, 1.0, 0.1],
+            vec![-0.7, 0.4, 0.6],
+            vec![-0.2, -0.9, 0.3],
+            vec![0.5, -0.5, -0.7],
+        ];
+        // On one great circle: rank 2, a zero third coordinate (closed, no solution: 200
+        // iterations that must agree too).
+        let circle = vec![
+            vec![1.0, 0.0],
+            vec![0.6, 0.8],
+            vec![-0.28, 0.96],
+            vec![-0.8, 0.6],
+        ];
+        let s3 = vec![
+            vec![1.0, 0.0, 0.0, 0.1],
+            vec![0.9, 0.4, 0.0, 0.2],
+            vec![0.5, 0.5, 0.5, -0.5],
+            vec![0.0, 0.3, 0.9, 0.2],
+            vec![-0.4, 0.1, 0.5, 0.7],
+        ];
+        let settings = Settings {
+            change_tolerance: 1e-14,
+            residual_tolerance: 1e-14,
+            max_iterations: 200,
+        };
+        let bits = |(d, i, r): (Vec<Vec<f64>>, usize, f64)| {
+            let d: Vec<Vec<u64>> = d
+                .iter()
+                .map(|v| v.iter().map(|x| x.to_bits()).collect())
+                .collect();
+            (d, i, r.to_bits())
+        };
+        for closed in [false, true] {
+            for solver in [BetaSolver::Newton, BetaSolver::Jacobi] {
+                for (coords, dim) in [(&s2, 3), (&circle, 3), (&s3, 4)] {
+                    let m = coords.len();
+                    let beta1: Vec<f64> = (0..m).map(|i| 0.6 + 0.2 * i as f64).collect();
+                    let gamma: Vec<f64> = beta1.iter().map(|&b| gamma(b, 1.5)).collect();
+                    let shape = shape_constants(&beta1, &gamma, closed);
+                    let rank = coords[0].len();
+                    let native = if dim == 3 {
+                        run::<DVec3>(coords, rank, 3, &shape, solver, settings, closed)
+                    } else {
+                        run::<DVec4>(coords, rank, 4, &shape, solver, settings, closed)
+                    };
+                    let wasm =
+                        run::<VecN>(coords, rank, rank.max(3), &shape, solver, settings, closed);
+                    assert!(native.1 >= 1, "{solver:?} iterates");
+                    assert_eq!(
+                        bits(native),
+                        bits(wasm),
+                        "{solver:?}, closed {closed}, rank {rank}"
+                    );
+                }
+            }
+        }
+    }
 }
