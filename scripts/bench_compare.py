@@ -62,6 +62,23 @@ def rust():
     return json.loads(out)
 
 
+PAIRED_ROUNDS = 15
+
+
+def paired_rounds(build_scipy):
+    """The cubic's 1 000-key construction against scipy's, in PAIRED_ROUNDS rounds that alternate
+    the two (scipy best of 5, spherekit best of 21, one after the other), so that both sides of a
+    round's ratio see the same load: [(scipy ns, spherekit ns)]."""
+    cmd = ["cargo", "run", "--quiet", "--release", "-p", "spherekit", "--example", "bench_json",
+           "--", "cubic-build", "21"]
+    rounds = []
+    for _ in range(PAIRED_ROUNDS):
+        peer, _ = best(build_scipy, reps=5)
+        own = float(subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True, text=True).stdout)
+        rounds.append((peer, own))
+    return rounds
+
+
 def main():
     uptime_before = subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
     r = rust()
@@ -127,6 +144,7 @@ def main():
     rot1000 = Rotation.from_quat(xyzw1000)
     # Best of 21, as many runs as spherekit's 1 000-key builds get in bench_json.
     build1000, _ = best(lambda: RotationSpline(times1000, rot1000), reps=21)
+    paired = paired_rounds(lambda: RotationSpline(times1000, rot1000))
 
     # splines (pure Python), on SLOW_SAMPLES parameters.
     uq = [sq.UnitQuaternion.from_unit_xyzw(v) for v in xyzw]
@@ -155,7 +173,7 @@ def main():
     peers.append(("splines DeCasteljau", "bezier", t, diff, f"{len(ts_bez)} samples; same curve"))
 
     uptime_after = subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
-    write(r, peers, build20, build1000, uptime_before, uptime_after)
+    write(r, peers, build20, build1000, paired, uptime_before, uptime_after)
 
 
 def fmt(x, digits=1):
@@ -166,7 +184,7 @@ def fmt(x, digits=1):
     return f"{x:.{digits}f}"
 
 
-def write(r, peers, build20, build1000, up0, up1):
+def write(r, peers, build20, build1000, paired, up0, up1):
     methods = {m["name"]: m for m in r["methods"]}
     slerp = r["glam_slerp_ns"]
     lines = []
@@ -224,6 +242,17 @@ def write(r, peers, build20, build1000, up0, up1):
                      f"{build20 / m['build_20_ns']:.1f}× |")
         lines.append(f"| 1 000 | {fmt(build1000 / 1e3, 1)} | {name} | {fmt(m['build_1000_ns'] / 1e3, 1)} | "
                      f"{build1000 / m['build_1000_ns']:.1f}× |")
+    lines.append("")
+    ratios = sorted(p / o for p, o in paired)
+    med = ratios[len(ratios) // 2]
+    peer_med = sorted(p for p, _ in paired)[len(paired) // 2]
+    own_med = sorted(o for _, o in paired)[len(paired) // 2]
+    lines.append(
+        f"Paired rounds, `cubic` against `RotationSpline` on the 1 000 keys ({len(paired)} rounds, each "
+        f"scipy best of 5 then spherekit best of 21, so that both sides of a ratio see the same load): "
+        f"ratio median **{med:.1f}×**, range {ratios[0]:.1f}–{ratios[-1]:.1f}× (medians {fmt(peer_med / 1e3, 1)} "
+        f"and {fmt(own_med / 1e3, 1)} µs)."
+    )
     lines.append("")
     lines.append(
         f"Date {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "

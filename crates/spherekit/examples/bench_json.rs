@@ -7,6 +7,10 @@
 //! the parameters, for the accuracy check against the peers.
 //!
 //! `cargo run --release -p spherekit --example bench_json [SAMPLES] [KEYS]`
+//!
+//! `bench_json cubic-build REPS` prints only the best time, in ns, of `REPS` constructions of
+//! the cubic (scipy ends) on the benches' 1 000 keys: the paired rounds of `bench_compare.py`,
+//! which alternate it with scipy's `RotationSpline` on the same keys.
 
 #![allow(
     clippy::cast_precision_loss,
@@ -43,7 +47,16 @@ fn wxyz(q: &UnitQuat) -> [f64; 4] {
 }
 
 fn main() {
-    let mut args = std::env::args().skip(1);
+    let mut args = std::env::args().skip(1).peekable();
+    if args.peek().is_some_and(|a| a == "cubic-build") {
+        let reps: usize = args.nth(1).map_or(21, |s| s.parse().unwrap());
+        let keys = data::keys_s3(1000);
+        let ns = best(reps, 1, || {
+            black_box(CubicSpline::try_new(black_box(keys.clone()), None, CubicEnd::Scipy, false).unwrap());
+        });
+        println!("{ns}");
+        return;
+    }
     let samples: usize = args.next().map_or(200_000, |s| s.parse().unwrap());
     let count: usize = args.next().map_or(20, |s| s.parse().unwrap());
     let reps = 21;
