@@ -67,13 +67,13 @@ PAIRED_ROUNDS = 15
 
 def paired_rounds(build_scipy):
     """The cubic's 1 000-key construction against scipy's, in PAIRED_ROUNDS rounds that alternate
-    the two (scipy best of 5, spherekit best of 21, one after the other), so that both sides of a
+    the two (best of 21 each, one after the other), so that both sides of a
     round's ratio see the same load: [(scipy ns, spherekit ns)]."""
     cmd = ["cargo", "run", "--quiet", "--release", "-p", "spherekit", "--example", "bench_json",
            "--", "cubic-build", "21"]
     rounds = []
     for _ in range(PAIRED_ROUNDS):
-        peer, _ = best(build_scipy, reps=5)
+        peer, _ = best(build_scipy, reps=21)
         own = float(subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True, text=True).stdout)
         rounds.append((peer, own))
     return rounds
@@ -249,7 +249,7 @@ def write(r, peers, build20, build1000, paired, up0, up1):
     own_med = sorted(o for _, o in paired)[len(paired) // 2]
     lines.append(
         f"Paired rounds, `cubic` against `RotationSpline` on the 1 000 keys ({len(paired)} rounds, each "
-        f"scipy best of 5 then spherekit best of 21, so that both sides of a ratio see the same load): "
+        f"scipy best of 21 then spherekit best of 21, so that both sides of a ratio see the same load): "
         f"ratio median **{med:.1f}×**, range {ratios[0]:.1f}–{ratios[-1]:.1f}× (medians {fmt(peer_med / 1e3, 1)} "
         f"and {fmt(own_med / 1e3, 1)} µs)."
     )
