@@ -76,6 +76,8 @@ use crate::error::SplineError;
 use crate::flow::{PlaneRotation, Segment, Weights};
 use crate::knots::Knots;
 use crate::manifold::{Manifold, renormalize};
+#[cfg(any(test, target_arch = "wasm32"))]
+use crate::recast::{Recast, to_sn};
 use crate::smoothing::SmoothingPolynomials;
 
 /// The largest continuity order accepted by the spline constructors.
@@ -537,8 +539,46 @@ impl<P: Manifold> ArcBlend<P> {
     }
 
     /// The construction of [`try_new_with`](Self::try_new_with) and
-    /// [`try_new_closed_with`](Self::try_new_closed_with), on checked points.
+    /// [`try_new_closed_with`](Self::try_new_closed_with), on checked points: natively on `P`
+    /// itself, in the wasm build once on S^m for every point type ([`crate::recast`]; the same
+    /// bits, `tests::the_construction_gives_the_same_bits_on_sn`).
     fn build(
+        points: Vec<P>,
+        order: usize,
+        timing: ArcBlendTiming,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        #[cfg(not(target_arch = "wasm32"))]
+        return Self::construct(points, order, timing, closed);
+        #[cfg(target_arch = "wasm32")]
+        return Self::construct_on_sn(points, order, timing, closed);
+    }
+
+    /// [`construct`](Self::construct) on the keys as points of S^m, the result converted back.
+    #[cfg(any(test, target_arch = "wasm32"))]
+    fn construct_on_sn(
+        points: Vec<P>,
+        order: usize,
+        timing: ArcBlendTiming,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let to = Recast::to(&points[0]);
+        let sn = points.iter().map(to_sn).collect();
+        let c = ArcBlend::construct(sn, order, timing, closed)?;
+        Ok(Self {
+            points: to.points(&c.points),
+            knots: c.knots,
+            poly: c.poly,
+            circles: c.circles.iter().map(|a| a.recast(&to)).collect(),
+            segments: c.segments.iter().map(|g| g.recast(&to)).collect(),
+            warps: c.warps,
+            timing: c.timing,
+            closed: c.closed,
+        })
+    }
+
+    /// The construction of [`build`](Self::build) on `P`.
+    fn construct(
         mut points: Vec<P>,
         order: usize,
         timing: ArcBlendTiming,
@@ -869,6 +909,49 @@ impl<P: Manifold> ArcBlend<P> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::recast::keys;
+
+    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
+    /// each `f64` in the shortest form that reads back to the same bits).
+    #[test]
+    fn the_construction_gives_the_same_bits_on_sn() {
+        fn check<P: Manifold>(points: &[P]) -> usize {
+            let mut built = 0;
+            for closed in [false, true] {
+                let checked = if closed {
+                    check_loop_neighbours(points, 3)
+                } else {
+                    check_neighbours(points, 3)
+                };
+                if checked.is_err() {
+                    continue;
+                }
+                let k = points.len() - usize::from(!closed);
+                let knots: Vec<f64> = (0..=k).map(|i| (i * i) as f64 * 0.7 + i as f64).collect();
+                for order in [1, 2, 3, 11] {
+                    for timing in [
+                        ArcBlendTiming::Auto,
+                        ArcBlendTiming::Book,
+                        ArcBlendTiming::ArcLength,
+                        ArcBlendTiming::Uniform,
+                        ArcBlendTiming::Knots(knots.clone()),
+                    ] {
+                        let native =
+                            ArcBlend::construct(points.to_vec(), order, timing.clone(), closed);
+                        let on_sn =
+                            ArcBlend::construct_on_sn(points.to_vec(), order, timing, closed);
+                        built += usize::from(native.is_ok());
+                        assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{points:?}");
+                    }
+                }
+            }
+            built
+        }
+        let built: usize = keys::on_s2().iter().map(|p| check(p)).sum::<usize>()
+            + keys::on_s3().iter().map(|p| check(p)).sum::<usize>();
+        assert!(built > 50, "{built} curves built");
+    }
 
     #[test]
     fn warp_end_conditions_and_monotonicity() {

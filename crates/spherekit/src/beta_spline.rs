@@ -13,6 +13,8 @@ use crate::bezier::CubicSegment;
 use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::{PointError, SolveError, SplineError};
 use crate::manifold::Manifold;
+#[cfg(any(test, target_arch = "wasm32"))]
+use crate::recast::{Recast, to_sn};
 use crate::slerp_jet::ScalarJet;
 
 /// Two consecutive data points closer than this (radians) are [`SplineError::Coincident`]
@@ -381,6 +383,10 @@ impl<P: Manifold> BetaSpline<P> {
         Self::build(points, params, true)
     }
 
+    /// The construction of [`try_new`](Self::try_new) and
+    /// [`try_new_closed`](Self::try_new_closed): natively on `P` itself, in the wasm build once
+    /// on S^m for every point type ([`crate::recast`]; the same bits,
+    /// `tests::the_construction_gives_the_same_bits_on_sn`).
     fn build(points: Vec<P>, params: &BetaParams, closed: bool) -> Result<Self, SplineError> {
         let min = if closed { 3 } else { 2 };
         if points.len() < min {
@@ -389,6 +395,40 @@ impl<P: Manifold> BetaSpline<P> {
                 got: points.len(),
             });
         }
+        #[cfg(not(target_arch = "wasm32"))]
+        return Self::construct(points, params, closed);
+        #[cfg(target_arch = "wasm32")]
+        return Self::construct_on_sn(points, params, closed);
+    }
+
+    /// [`construct`](Self::construct) on the points as points of S^m, the result converted
+    /// back; `points` is not empty.
+    #[cfg(any(test, target_arch = "wasm32"))]
+    fn construct_on_sn(
+        points: Vec<P>,
+        params: &BetaParams,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let to = Recast::to(&points[0]);
+        let sn = points.iter().map(to_sn).collect();
+        let c = BetaSpline::construct(sn, params, closed)?;
+        Ok(Self {
+            points: to.points(&c.points),
+            aux: to.points(&c.aux),
+            controls: to.points(&c.controls),
+            segments: c.segments.iter().map(|s| s.recast(&to)).collect(),
+            beta1: c.beta1,
+            beta2: c.beta2,
+            gamma: c.gamma,
+            joints: c.joints,
+            info: c.info,
+            closed: c.closed,
+        })
+    }
+
+    /// The construction of [`build`](Self::build) on `P`, with at least the minimum number of
+    /// points.
+    fn construct(points: Vec<P>, params: &BetaParams, closed: bool) -> Result<Self, SplineError> {
         let count = points.len();
         let checked = Checked::new(params, count)?;
         let Checked {
@@ -894,6 +934,55 @@ fn run<V: Coords>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::recast::keys;
+
+    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
+    /// each `f64` in the shortest form that reads back to the same bits). (Natively the S^m
+    /// construction of these keys runs the `DVec3`/`DVec4` kernel; that the wasm build's
+    /// `VecN` kernel gives the same bits is `the_kernel_gives_the_same_bits_in_vecn`.)
+    #[test]
+    fn the_construction_gives_the_same_bits_on_sn() {
+        fn check<P: Manifold>(points: &[P]) -> usize {
+            let mut built = 0;
+            let m = points.len();
+            let per_point: Vec<f64> = (0..m).map(|i| 0.6 + 0.3 * i as f64).collect();
+            for closed in [false, true] {
+                for (beta1, beta2) in [
+                    (ShapeParam::Constant(1.0), ShapeParam::Constant(0.0)),
+                    (
+                        ShapeParam::PerPoint(per_point.clone()),
+                        ShapeParam::Constant(2.0),
+                    ),
+                ] {
+                    for interpolate in [true, false] {
+                        for solver in [BetaSolver::Newton, BetaSolver::Jacobi] {
+                            let params = BetaParams {
+                                beta1: beta1.clone(),
+                                beta2: beta2.clone(),
+                                interpolate,
+                                solver,
+                                ..BetaParams::default()
+                            };
+                            let native = BetaSpline::construct(points.to_vec(), &params, closed);
+                            let on_sn =
+                                BetaSpline::construct_on_sn(points.to_vec(), &params, closed);
+                            built += usize::from(native.is_ok());
+                            assert_eq!(
+                                format!("{native:?}"),
+                                format!("{on_sn:?}"),
+                                "{points:?}, {params:?}, closed {closed}"
+                            );
+                        }
+                    }
+                }
+            }
+            built
+        }
+        let built: usize = keys::on_s2().iter().map(|p| check(p)).sum::<usize>()
+            + keys::on_s3().iter().map(|p| check(p)).sum::<usize>();
+        assert!(built > 50, "{built} curves built");
+    }
 
     /// The wasm build solves S² and S³ in `VecN` padded to 3 and 4 coordinates; it must give
     /// exactly what the native `DVec3` and `DVec4` kernels give.

@@ -315,6 +315,15 @@ impl<P: Manifold> CubicSegment<P> {
         Ok(Self { ctrl, arcs })
     }
 
+    /// The same segment on the point type `Q` ([`crate::recast`]).
+    #[cfg(any(test, target_arch = "wasm32"))]
+    pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CubicSegment<Q> {
+        CubicSegment {
+            ctrl: self.ctrl.each_ref().map(|p| to.point(p)),
+            arcs: self.arcs.each_ref().map(|a| a.recast(to)),
+        }
+    }
+
     /// The control points.
     #[must_use]
     pub fn controls(&self) -> &[P; 4] {

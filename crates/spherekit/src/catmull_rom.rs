@@ -10,6 +10,8 @@ use crate::error::SplineError;
 use crate::geodesic::{MIN_LOOP_POINTS, check_chain, check_loop};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
+#[cfg(any(test, target_arch = "wasm32"))]
+use crate::recast::{Recast, to_sn};
 use crate::s3::UnitQuat;
 use crate::slerp_jet::ScalarJet;
 
@@ -154,8 +156,34 @@ impl<P: Manifold> CatmullRom<P> {
         Self::intrinsic(points, knots, true)
     }
 
-    /// The intrinsic tangents `Tₖ = (log_{cₖ}(cₖ₊₁) − log_{cₖ}(cₖ₋₁))/Wₖ` and the segments.
+    /// The intrinsic construction: natively on `P` itself, in the wasm build once on S^m for
+    /// every point type ([`crate::recast`]; the same bits,
+    /// `tests::the_construction_gives_the_same_bits_on_sn`). `points` is not empty.
     fn intrinsic(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        #[cfg(not(target_arch = "wasm32"))]
+        return Self::construct(points, knots, closed);
+        #[cfg(target_arch = "wasm32")]
+        return Self::construct_on_sn(points, knots, closed);
+    }
+
+    /// [`construct`](Self::construct) on the points as points of S^m, the result converted
+    /// back.
+    #[cfg(any(test, target_arch = "wasm32"))]
+    fn construct_on_sn(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        let to = Recast::to(&points[0]);
+        let sn = points.iter().map(to_sn).collect();
+        let c = CatmullRom::construct(sn, knots, closed)?;
+        Ok(Self {
+            points: to.points(&c.points),
+            closed: c.closed,
+            knots: c.knots,
+            controls: to.points(&c.controls),
+            segments: c.segments.iter().map(|s| s.recast(&to)).collect(),
+        })
+    }
+
+    /// The intrinsic tangents `Tₖ = (log_{cₖ}(cₖ₊₁) − log_{cₖ}(cₖ₋₁))/Wₖ` and the segments.
+    fn construct(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
         let stencil = stencil(&points, &knots, closed);
         let keys: Vec<P> = stencil.iter().map(|s| s.0.clone()).collect();
         let tangents: Vec<P::Vector> = stencil
@@ -326,5 +354,47 @@ impl<P: Manifold> Curve for CatmullRom<P> {
         self.knots.map_into(ts, Side::Right, out, |i, s| {
             self.segments[i].jet(ScalarJet::param(s, 1.0 / self.knots.width(i)))
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::recast::keys;
+
+    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
+    /// each `f64` in the shortest form that reads back to the same bits).
+    #[test]
+    fn the_construction_gives_the_same_bits_on_sn() {
+        fn check<P: Manifold>(points: &[P]) -> usize {
+            let mut built = 0;
+            for closed in [false, true] {
+                let checked = if closed {
+                    check_loop(points, MIN_LOOP_POINTS)
+                } else {
+                    check_chain(points, 4)
+                };
+                if checked.is_err() {
+                    continue;
+                }
+                let n = if closed {
+                    points.len() + 1
+                } else {
+                    points.len() - 2
+                };
+                let uneven: Vec<f64> = (0..n).map(|i| (i * i) as f64 * 0.3 + i as f64).collect();
+                for knots in [Knots::uniform(n), Knots::try_new(uneven).unwrap()] {
+                    let native = CatmullRom::construct(points.to_vec(), knots.clone(), closed);
+                    let on_sn = CatmullRom::construct_on_sn(points.to_vec(), knots, closed);
+                    built += usize::from(native.is_ok());
+                    assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{points:?}");
+                }
+            }
+            built
+        }
+        let built: usize = keys::on_s2().iter().map(|p| check(p)).sum::<usize>()
+            + keys::on_s3().iter().map(|p| check(p)).sum::<usize>();
+        assert!(built > 12, "{built} curves built");
     }
 }

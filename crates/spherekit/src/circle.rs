@@ -190,6 +190,21 @@ impl<P: Manifold> CircleArc<P> {
     }
 }
 
+#[cfg(any(test, target_arch = "wasm32"))]
+impl<P: Manifold> CircleArc<P> {
+    /// The same arc on the point type `Q` ([`crate::recast`]).
+    pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CircleArc<Q> {
+        CircleArc {
+            start: to.point(&self.start),
+            center: to.vector(&self.center),
+            radius: self.radius,
+            plane: self.plane.recast(to),
+            first_angle: self.first_angle,
+            second_angle: self.second_angle,
+        }
+    }
+}
+
 impl CircleArc<S2Point> {
     /// The unit axis `â = a × b` of (8.1): the circle is traversed counter-clockwise about it,
     /// and its plane is `â·x = â·p₁`.

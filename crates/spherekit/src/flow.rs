@@ -54,6 +54,39 @@ impl<V: Ambient> Flow<V> for PlaneRotation<V> {
     }
 }
 
+#[cfg(any(test, target_arch = "wasm32"))]
+impl<V: Ambient> PlaneRotation<V> {
+    /// The same rotation in the ambient space of `Q` (the wasm build's construction on S^m,
+    /// [`crate::recast`]).
+    pub(crate) fn recast<Q: crate::Manifold>(
+        &self,
+        to: &crate::recast::Recast<Q>,
+    ) -> PlaneRotation<Q::Vector> {
+        PlaneRotation {
+            a: to.vector(&self.a),
+            b: to.vector(&self.b),
+        }
+    }
+}
+
+#[cfg(any(test, target_arch = "wasm32"))]
+impl<V: Ambient> Segment<V, PlaneRotation<V>> {
+    /// The same segment in the ambient space of `Q` ([`crate::recast`]).
+    pub(crate) fn recast<Q: crate::Manifold>(
+        &self,
+        to: &crate::recast::Recast<Q>,
+    ) -> Segment<Q::Vector, PlaneRotation<Q::Vector>> {
+        Segment {
+            base: to.vector(&self.base),
+            outer: self.outer.recast(to),
+            outer_angle: self.outer_angle,
+            inner: self.inner.as_ref().map(|(f, angle)| (f.recast(to), *angle)),
+            weights: self.weights,
+            width: self.width,
+        }
+    }
+}
+
 /// Left multiplication of unit quaternions by `e_n(θ) = cos θ + sin θ·n` (unit axis `n`): the
 /// rotation `Rot(n, 2θ)` applied to an orientation in the base frame. `θ` is the angle on S³.
 #[derive(Clone, Debug, PartialEq)]

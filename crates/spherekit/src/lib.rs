@@ -131,6 +131,8 @@ mod knots;
 mod manifold;
 mod math;
 pub mod quaternion;
+#[cfg(any(test, target_arch = "wasm32"))]
+mod recast;
 mod rotation;
 mod s2;
 mod s3;

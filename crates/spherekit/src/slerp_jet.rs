@@ -236,6 +236,17 @@ impl<V: Ambient> FixedArc<V> {
         })
     }
 
+    /// The same arc in the ambient space of `Q` ([`crate::recast`]).
+    #[cfg(any(test, target_arch = "wasm32"))]
+    pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> FixedArc<Q::Vector> {
+        FixedArc {
+            start: to.vector(&self.start),
+            end: to.vector(&self.end),
+            dir: to.vector(&self.dir),
+            theta: self.theta,
+        }
+    }
+
     /// The point at fraction `s`; exact at 0 and 1.
     #[inline]
     pub(crate) fn point(&self, s: f64) -> V {

@@ -1,0 +1,133 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Constructions run once, on S^m, in the wasm build.
+//!
+//! Every [`Manifold`] operation is a default method over [`Ambient`], and the ambient types do
+//! the same arithmetic coordinate by coordinate: glam's `DVec3::dot`/`DVec4::dot` is
+//! `x·x′ + y·y′ + z·z′ (+ w·w′)` from left to right, [`VecN`]'s the same sum starting from
+//! −0.0 (`−0.0 + a = a` exactly); sums, differences and scalings are per coordinate in both.
+//! So a construction whose arithmetic never leaves the `Manifold`/`Ambient` operations gives
+//! the same bits on [`SnPoint`] as on [`S2Point`](crate::S2Point) or
+//! [`UnitQuat`](crate::UnitQuat) with the same coordinates. The wasm build uses that to keep
+//! one copy of such constructions in the .wasm instead of three: it converts the keys to
+//! `SnPoint`, builds there, and converts the built curve back ([`Recast`]), so the curve is
+//! evaluated on its own point type (a `VecN` jet allocates). Native builds construct on the
+//! point type itself (no conversions). Each construction that does this has a test that both
+//! paths give the same bits.
+
+use crate::ambient::{Ambient, VecN};
+use crate::manifold::Manifold;
+use crate::sn::SnPoint;
+
+/// The point `p` as a point of S^m with the same coordinates.
+pub(crate) fn to_sn<P: Manifold>(p: &P) -> SnPoint {
+    SnPoint::from_vector_unchecked(VecN::new(p.to_vector().to_vec()))
+}
+
+/// Converts vectors and points to the point type `Q`, coordinate by coordinate.
+pub(crate) struct Recast<Q: Manifold> {
+    /// A vector of `Q`'s ambient space (its coordinates are not used, only its dimension).
+    like: Q::Vector,
+}
+
+impl<Q: Manifold> Recast<Q> {
+    /// Conversions to the point type of `like`.
+    pub(crate) fn to(like: &Q) -> Self {
+        Self {
+            like: like.to_vector(),
+        }
+    }
+
+    /// The vector of `Q`'s ambient space with the coordinates of `v`.
+    pub(crate) fn vector<V: Ambient>(&self, v: &V) -> Q::Vector {
+        self.like.with_coords(v.as_slice())
+    }
+
+    /// The point of `Q` with the coordinates of `p`.
+    pub(crate) fn point<P: Manifold>(&self, p: &P) -> Q {
+        Q::from_vector_unchecked(self.vector(&p.to_vector()))
+    }
+
+    /// [`point`](Self::point) of every point of `ps`.
+    pub(crate) fn points<P: Manifold>(&self, ps: &[P]) -> Vec<Q> {
+        ps.iter().map(|p| self.point(p)).collect()
+    }
+}
+
+/// Key sets for the tests that a construction gives the same bits on S^m.
+#[cfg(test)]
+pub(crate) mod keys {
+    use glam::{DQuat, DVec3, DVec4};
+
+    use crate::{S2Point, UnitQuat};
+
+    fn s2(v: [f64; 3]) -> S2Point {
+        S2Point::try_new(DVec3::from_array(v)).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    fn s3(v: [f64; 4]) -> UnitQuat {
+        UnitQuat::try_new(DQuat::from_vec4(DVec4::from_array(v))).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// Key sequences on S²: a generic one, keys 1e-9 rad apart (near 0), steps close to a
+    /// half turn, keys on one great circle, a repeated key and a key repeated two apart.
+    pub(crate) fn on_s2() -> Vec<Vec<S2Point>> {
+        let near_pi = |a: f64| s2([a.cos(), a.sin(), 1e-3 * a]);
+        vec![
+            vec![
+                s2([1.0, 0.0, 0.3]),
+                s2([0.6, 0.8, 0.4]),
+                s2([-0.2, 1.0, 0.1]),
+                s2([-0.9, 0.3, -0.2]),
+                s2([-0.4, -0.8, 0.5]),
+            ],
+            vec![
+                s2([1.0, 0.0, 0.0]),
+                s2([1.0, 1e-9, 0.0]),
+                s2([1.0, 2e-9, 1e-9]),
+                s2([1.0, 2e-9, 3e-9]),
+            ],
+            vec![near_pi(0.0), near_pi(3.1), near_pi(6.2), near_pi(9.3)],
+            vec![
+                s2([1.0, 0.0, 0.0]),
+                s2([0.0, 1.0, 0.0]),
+                s2([-1.0, 0.0, 0.0]),
+                s2([0.0, -1.0, 0.0]),
+            ],
+            vec![
+                s2([1.0, 0.0, 0.3]),
+                s2([0.6, 0.8, 0.4]),
+                s2([0.6, 0.8, 0.4]),
+                s2([-0.9, 0.3, -0.2]),
+            ],
+            vec![
+                s2([1.0, 0.0, 0.3]),
+                s2([0.6, 0.8, 0.4]),
+                s2([1.0, 0.0, 0.3]),
+                s2([-0.9, 0.3, -0.2]),
+            ],
+        ]
+    }
+
+    /// Key sequences on S³: a generic one, keys 1e-9 apart, and steps close to a half turn.
+    pub(crate) fn on_s3() -> Vec<Vec<UnitQuat>> {
+        let near_pi = |a: f64| s3([a.cos(), a.sin(), 1e-3 * a, 0.2]);
+        vec![
+            vec![
+                s3([1.0, 0.0, 0.0, 0.1]),
+                s3([0.9, 0.4, 0.0, 0.2]),
+                s3([0.5, 0.5, 0.5, -0.5]),
+                s3([0.0, 0.3, 0.9, 0.2]),
+                s3([-0.4, 0.1, 0.5, 0.7]),
+            ],
+            vec![
+                s3([0.0, 0.0, 0.0, 1.0]),
+                s3([1e-9, 0.0, 0.0, 1.0]),
+                s3([2e-9, 1e-9, 0.0, 1.0]),
+                s3([2e-9, 3e-9, 1e-9, 1.0]),
+            ],
+            vec![near_pi(0.0), near_pi(3.1), near_pi(6.2), near_pi(9.3)],
+        ]
+    }
+}
