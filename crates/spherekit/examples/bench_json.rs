@@ -52,7 +52,10 @@ fn main() {
         let reps: usize = args.nth(1).map_or(21, |s| s.parse().unwrap());
         let keys = data::keys_s3(1000);
         let ns = best(reps, 1, || {
-            black_box(CubicSpline::try_new(black_box(keys.clone()), None, CubicEnd::Scipy, false).unwrap());
+            black_box(
+                CubicSpline::try_new(black_box(keys.clone()), None, CubicEnd::Scipy, false)
+                    .unwrap(),
+            );
         });
         println!("{ns}");
         return;

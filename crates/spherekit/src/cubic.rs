@@ -122,6 +122,12 @@ use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame_sin_cos, renormalize};
 use crate::math;
 use crate::s3::UnitQuat;
+#[cfg(any(test, target_arch = "wasm32"))]
+use crate::{
+    ambient::VecN,
+    recast::{Recast, to_sn},
+    sn::SnPoint,
+};
 
 /// Newton stops once the relative residual is at most this.
 const TARGET_RESIDUAL: f64 = 1e-12;
@@ -289,6 +295,64 @@ impl<P: Manifold> CubicSpline<P> {
     ///   within that tolerance is projected onto the tangent space);
     /// - [`SplineError::Solve`] if Newton's method does not reach the residual 1e-12.
     pub fn try_new(
+        points: Vec<P>,
+        knots: Option<Vec<f64>>,
+        end: CubicEnd<P::Vector>,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        // Natively on `P` itself; in the wasm build once on S^m for every point type
+        // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
+        #[cfg(not(target_arch = "wasm32"))]
+        return Self::construct(points, knots, end, closed);
+        #[cfg(target_arch = "wasm32")]
+        return Self::construct_on_sn(points, knots, end, closed);
+    }
+
+    /// [`construct`](Self::construct) on the keys as points of S^m, the built curve converted
+    /// back (the keys and the end condition are kept as given: the conversion copies
+    /// coordinates).
+    #[cfg(any(test, target_arch = "wasm32"))]
+    fn construct_on_sn(
+        points: Vec<P>,
+        knots: Option<Vec<f64>>,
+        end: CubicEnd<P::Vector>,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let sn = points.iter().map(to_sn).collect();
+        let vector = |v: &P::Vector| VecN::new(v.to_vec());
+        let end_sn = match &end {
+            CubicEnd::Natural => CubicEnd::Natural,
+            CubicEnd::Scipy => CubicEnd::Scipy,
+            CubicEnd::Clamped { start, end } => CubicEnd::Clamped {
+                start: vector(start),
+                end: vector(end),
+            },
+        };
+        let c = CubicSpline::<SnPoint>::construct(sn, knots, end_sn, closed)?;
+        let to = Recast::to(&points[0]);
+        Ok(Self {
+            points,
+            knots: c.knots,
+            end,
+            closed: c.closed,
+            velocities: c.velocities.iter().map(|v| to.vector(v)).collect(),
+            segments: c
+                .segments
+                .iter()
+                .map(|g| Segment {
+                    start: to.vector(&g.start),
+                    a: to.vector(&g.a),
+                    b: to.vector(&g.b),
+                    c: to.vector(&g.c),
+                    inv_h: g.inv_h,
+                })
+                .collect(),
+            info: c.info,
+        })
+    }
+
+    /// The construction of [`try_new`](Self::try_new) on `P`.
+    fn construct(
         points: Vec<P>,
         knots: Option<Vec<f64>>,
         end: CubicEnd<P::Vector>,
@@ -806,7 +870,9 @@ struct Frames {
 
 /// Calls `$body` with `$d` bound to the dimension `$r` as a [`Dim`]: a constant for 4 (the
 /// span of keys on S³, so that the short loops over coordinates are unrolled), [`Dynamic`]
-/// otherwise.
+/// otherwise. The wasm build has the [`Dynamic`] copy only (the same loops, so the same
+/// bits).
+#[cfg(not(target_arch = "wasm32"))]
 macro_rules! with_dim {
     ($r:expr, |$d:ident| $body:expr) => {
         match $r {
@@ -820,6 +886,13 @@ macro_rules! with_dim {
             }
         }
     };
+}
+#[cfg(target_arch = "wasm32")]
+macro_rules! with_dim {
+    ($r:expr, |$d:ident| $body:expr) => {{
+        let $d = Dynamic($r);
+        $body
+    }};
 }
 
 impl Frames {
@@ -987,12 +1060,14 @@ trait Dim: Copy {
 #[derive(Clone, Copy)]
 struct Dynamic(usize);
 
-/// A dimension known at compile time.
+/// A dimension known at compile time (native builds: [`with_dim`]).
+#[cfg(not(target_arch = "wasm32"))]
 #[derive(Clone, Copy)]
 struct Const<const N: usize>;
 
+#[cfg(not(target_arch = "wasm32"))]
 impl<const N: usize> Dim for Const<N> {
-    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+    #[inline(always)]
     fn get(self) -> usize {
         N
     }
@@ -2589,6 +2664,68 @@ fn invert<D: Dim>(d: D, a: &[f64], out: &mut [f64]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::recast::keys;
+
+    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
+    /// each `f64` in the shortest form that reads back to the same bits).
+    #[test]
+    fn the_construction_gives_the_same_bits_on_sn() {
+        fn check<P: Manifold>(points: &[P]) -> usize {
+            let mut built = 0;
+            let n = points.len();
+            // A tangent velocity at each end key, and one that is not tangent.
+            let tangent = |p: &P, s: f64| {
+                let v = p.to_vector();
+                let raw = v.with_coords(
+                    &(0..v.dim())
+                        .map(|i| s * (1.0 + i as f64))
+                        .collect::<Vec<_>>(),
+                );
+                p.project_tangent(&raw)
+            };
+            let ends = [
+                CubicEnd::Natural,
+                CubicEnd::Scipy,
+                CubicEnd::Clamped {
+                    start: tangent(&points[0], 0.3),
+                    end: tangent(&points[n - 1], -0.7),
+                },
+                CubicEnd::Clamped {
+                    start: points[0].to_vector(),
+                    end: tangent(&points[n - 1], 0.2),
+                },
+            ];
+            for closed in [false, true] {
+                let count = n + usize::from(closed);
+                let uneven: Vec<f64> = (0..count)
+                    .map(|i| (i * i) as f64 * 0.7 + i as f64)
+                    .collect();
+                for knots in [None, Some(uneven)] {
+                    for end in &ends {
+                        let native = CubicSpline::construct(
+                            points.to_vec(),
+                            knots.clone(),
+                            end.clone(),
+                            closed,
+                        );
+                        let on_sn = CubicSpline::construct_on_sn(
+                            points.to_vec(),
+                            knots.clone(),
+                            end.clone(),
+                            closed,
+                        );
+                        built += usize::from(native.is_ok());
+                        assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{points:?}");
+                    }
+                }
+            }
+            built
+        }
+        let built: usize = keys::on_s2().iter().map(|p| check(p)).sum::<usize>()
+            + keys::on_s3().iter().map(|p| check(p)).sum::<usize>();
+        assert!(built > 40, "{built} curves built");
+    }
 
     #[test]
     fn series_match_closed_forms_at_the_switch() {
