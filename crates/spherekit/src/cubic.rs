@@ -2234,22 +2234,13 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     }
 
     /// The forward elimination of a chord step: `z` holds the residual `F(x)` (from
-    /// [`back`](Self::back)'s update), and is overwritten by `L⁻¹F(x)`. Returns the largest row
-    /// residual relative to the size of the row's terms at the last evaluation.
-    fn eliminate(&self, z: &mut [Vf<M>]) -> f64 {
-        let n = self.g.n;
-        let mut worst2 = 0.0_f64;
-        raise_worst(&z[0], self.scale2[0], &mut worst2);
-        // The last row of a loop is the Schur row, kept whole.
-        let rows = n - usize::from(self.g.closed);
+    /// [`back`](Self::back)'s update), and is overwritten by `L⁻¹F(x)` (the last row of a loop
+    /// is the Schur row, kept whole).
+    fn eliminate(&self, z: &mut [Vf<M>]) {
+        let rows = self.g.n - usize::from(self.g.closed);
         for k in 1..rows {
-            raise_worst(&z[k], self.scale2[k], &mut worst2);
             self.eliminate_row(k, z);
         }
-        if self.g.closed {
-            raise_worst(&z[n - 1], self.scale2[n - 1], &mut worst2);
-        }
-        worst2.sqrt()
     }
 
     /// The residual of row `k` after the chord step `x ← x − d` (`d = dₖ`, the step of the
@@ -2415,15 +2406,18 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     }
 
     /// The backward sweep: `x ← x − J⁻¹F` from the eliminated residual `z`, which is
-    /// overwritten by the residual at the new `x` ([`update`](Self::update)).
-    fn back(&mut self, z: &mut [Vf<M>], x: &mut [Vf<M>]) {
+    /// overwritten by the residual at the new `x` ([`update`](Self::update)). Returns its
+    /// largest row relative to the size of the row's terms at the last evaluation.
+    fn back(&mut self, z: &mut [Vf<M>], x: &mut [Vf<M>]) -> f64 {
         let n = self.g.n;
+        let mut worst2 = 0.0_f64;
         if !self.g.closed {
             let mut next = mat_vecf(&self.fac[n - 1].dinv, &z[n - 1]);
             for a in 0..M {
                 x[n - 1][a] -= next[a];
             }
             z[n - 1] = self.update(n - 1, &next);
+            raise_worst(&z[n - 1], self.scale2[n - 1], &mut worst2);
             for k in (0..n - 1).rev() {
                 let f = &self.fac[k];
                 let y = mat_vecf(&f.dinv, &z[k]);
@@ -2433,9 +2427,10 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                     x[k][a] -= d[a];
                 }
                 z[k] = self.update(k, &d);
+                raise_worst(&z[k], self.scale2[k], &mut worst2);
                 next = d;
             }
-            return;
+            return worst2.sqrt();
         }
         let rows = n - 1;
         let mut next = mat_vecf(&self.fac[rows - 1].dinv, &z[rows - 1]);
@@ -2461,11 +2456,14 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                 x[k][a] -= d[a];
             }
             z[k] = self.update(k, &d);
+            raise_worst(&z[k], self.scale2[k], &mut worst2);
         }
         for a in 0..M {
             x[n - 1][a] -= last[a];
         }
         z[n - 1] = self.update(n - 1, &last);
+        raise_worst(&z[n - 1], self.scale2[n - 1], &mut worst2);
+        worst2.sqrt()
     }
 
     /// [`Geometry::solve`] for the fixed dimension.
@@ -2515,15 +2513,15 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             }
         };
         while residual > target(fresh) && info.iterations < MAX_ITERATIONS {
-            self.back(&mut z, &mut x);
+            let updated = self.back(&mut z, &mut x);
             info.iterations += 1;
-            // Refactorise after the first (linear) step.
+            // Refactorise after the first step of a loop (from x = 0).
             let refactor = info.iterations == 1;
             let mut new = if refactor {
                 info.factorizations += 1;
                 self.sweep(&x, &mut z).map_err(|_| fail(info))?
             } else {
-                self.eliminate(&mut z)
+                updated
             };
             info.residual = new;
             if !new.is_finite() {
@@ -2535,11 +2533,16 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                 break;
             }
             fresh = refactor;
-            if !refactor && new > target(false) && new > 0.1 * residual {
-                // Slow convergence: refactorise at this x (the sweep again, with the factors).
-                info.factorizations += 1;
-                new = self.sweep(&x, &mut z).map_err(|_| fail(info))?;
-                fresh = true;
+            if !refactor && new > target(false) {
+                if new > 0.1 * residual {
+                    // Slow convergence: refactorise at this x (the sweep again, with the factors).
+                    info.factorizations += 1;
+                    new = self.sweep(&x, &mut z).map_err(|_| fail(info))?;
+                    fresh = true;
+                } else if info.iterations < MAX_ITERATIONS {
+                    // The next chord step (not needed once the residual meets the target).
+                    self.eliminate(&mut z);
+                }
             }
             residual = new;
         }
