@@ -67,15 +67,21 @@ PAIRED_ROUNDS = 15
 
 def paired_rounds(build_scipy):
     """The cubic's 1 000-key construction against scipy's, in PAIRED_ROUNDS rounds that alternate
-    the two (best of 21 each, one after the other), so that both sides of a
-    round's ratio see the same load: [(scipy ns, spherekit ns)]."""
+    the two (best of 21 each, one after the other; the Rust side in one process that stays up,
+    as the Python one does), so that both sides of a round's ratio see the same load:
+    [(scipy ns, spherekit ns)]."""
     cmd = ["cargo", "run", "--quiet", "--release", "-p", "spherekit", "--example", "bench_json",
            "--", "cubic-build", "21"]
     rounds = []
-    for _ in range(PAIRED_ROUNDS):
-        peer, _ = best(build_scipy, reps=21)
-        own = float(subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True, text=True).stdout)
-        rounds.append((peer, own))
+    with subprocess.Popen(cmd, cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True) as own:
+        for i in range(PAIRED_ROUNDS + 1):
+            peer, _ = best(build_scipy, reps=21)
+            own.stdin.write("round\n")
+            own.stdin.flush()
+            ns = float(own.stdout.readline())
+            if i > 0:  # the first round warms the Rust process up
+                rounds.append((peer, ns))
+        own.stdin.close()
     return rounds
 
 
