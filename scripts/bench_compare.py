@@ -62,27 +62,39 @@ def rust():
     return json.loads(out)
 
 
-PAIRED_ROUNDS = 15
+PAIRED_ROUNDS = {"build": 15, "rates": 9}
 
 
-def paired_rounds(build_scipy):
-    """The cubic's 1 000-key construction against scipy's, in PAIRED_ROUNDS rounds that alternate
-    the two (best of 21 each, one after the other; the Rust side in one process that stays up,
-    as the Python one does), so that both sides of a round's ratio see the same load:
-    [(scipy ns, spherekit ns)]."""
+def paired_rounds(peers):
+    """The cubic against scipy's `RotationSpline` in rounds that alternate the two, one after the
+    other, so that both sides of a round's ratio see the same load; the Rust side answers from one
+    process that stays up, as the Python one does. `peers` maps a request of `bench_json paired`
+    (`build`: 1 000-key construction, best of 21; `rates`: point, rate and acceleration per
+    sample, best of 5) to scipy's timing of the same thing. Returns {request: [(scipy, spherekit)]}."""
     cmd = ["cargo", "run", "--quiet", "--release", "-p", "spherekit", "--example", "bench_json",
-           "--", "cubic-build", "21"]
-    rounds = []
+           "--", "paired"]
+    rounds = {}
     with subprocess.Popen(cmd, cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True) as own:
-        for i in range(PAIRED_ROUNDS + 1):
-            peer, _ = best(build_scipy, reps=21)
-            own.stdin.write("round\n")
-            own.stdin.flush()
-            ns = float(own.stdout.readline())
-            if i > 0:  # the first round warms the Rust process up
-                rounds.append((peer, ns))
+        for request, peer in peers.items():
+            rounds[request] = []
+            for i in range(PAIRED_ROUNDS[request] + 1):
+                theirs = peer()
+                own.stdin.write(request + "\n")
+                own.stdin.flush()
+                ours = float(own.stdout.readline())
+                if i > 0:  # the first round warms both sides up
+                    rounds[request].append((theirs, ours))
         own.stdin.close()
     return rounds
+
+
+def paired_line(what, rounds, unit, scale):
+    ratios = sorted(p / o for p, o in rounds)
+    med = ratios[len(ratios) // 2]
+    peer_med = sorted(p for p, _ in rounds)[len(rounds) // 2]
+    own_med = sorted(o for _, o in rounds)[len(rounds) // 2]
+    return (f"- {what}: ratio median **{med:.1f}×**, range {ratios[0]:.1f}–{ratios[-1]:.1f}× "
+            f"({len(rounds)} rounds; medians {fmt(peer_med / scale, 1)} and {fmt(own_med / scale, 1)} {unit})")
 
 
 def main():
@@ -150,7 +162,10 @@ def main():
     rot1000 = Rotation.from_quat(xyzw1000)
     # Best of 21, as many runs as spherekit's 1 000-key builds get in bench_json.
     build1000, _ = best(lambda: RotationSpline(times1000, rot1000), reps=21)
-    paired = paired_rounds(lambda: RotationSpline(times1000, rot1000))
+    paired = paired_rounds({
+        "build": lambda: best(lambda: RotationSpline(times1000, rot1000), reps=21)[0],
+        "rates": lambda: best(lambda: (spline(ts), spline(ts, 1), spline(ts, 2)), reps=3)[0] / n,
+    })
 
     # splines (pure Python), on SLOW_SAMPLES parameters.
     uq = [sq.UnitQuaternion.from_unit_xyzw(v) for v in xyzw]
@@ -249,16 +264,15 @@ def write(r, peers, build20, build1000, paired, up0, up1):
         lines.append(f"| 1 000 | {fmt(build1000 / 1e3, 1)} | {name} | {fmt(m['build_1000_ns'] / 1e3, 1)} | "
                      f"{build1000 / m['build_1000_ns']:.1f}× |")
     lines.append("")
-    ratios = sorted(p / o for p, o in paired)
-    med = ratios[len(ratios) // 2]
-    peer_med = sorted(p for p, _ in paired)[len(paired) // 2]
-    own_med = sorted(o for _, o in paired)[len(paired) // 2]
     lines.append(
-        f"Paired rounds, `cubic` against `RotationSpline` on the 1 000 keys ({len(paired)} rounds, each "
-        f"scipy best of 21 then spherekit best of 21, so that both sides of a ratio see the same load): "
-        f"ratio median **{med:.1f}×**, range {ratios[0]:.1f}–{ratios[-1]:.1f}× (medians {fmt(peer_med / 1e3, 1)} "
-        f"and {fmt(own_med / 1e3, 1)} µs)."
+        "Paired rounds, `cubic` against `RotationSpline`, alternated one after the other so that both "
+        "sides of a ratio see the same load (scipy best of 21 constructions or of 3 evaluations, "
+        "spherekit best of 21 or 5):"
     )
+    lines.append("")
+    lines.append(paired_line("construction, 1 000 keys", paired["build"], "µs", 1e3))
+    lines.append(paired_line("rotation + rate + acceleration per sample, 20 keys, 200 000 parameters",
+                             paired["rates"], "ns", 1))
     lines.append("")
     lines.append(
         f"Date {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "

@@ -8,9 +8,10 @@
 //!
 //! `cargo run --release -p spherekit --example bench_json [SAMPLES] [KEYS]`
 //!
-//! `bench_json cubic-build REPS` prints, for each line it reads, the best time in ns of `REPS`
-//! constructions of the cubic (scipy ends) on the benches' 1 000 keys: the paired rounds of
-//! `bench_compare.py`, which alternate it with scipy's `RotationSpline` on the same keys, both
+//! `bench_json paired` answers each line it reads, `build` or `rates`, with one timing in ns:
+//! the best of 21 constructions of the cubic (scipy ends) on the benches' 1 000 keys, or the best
+//! of 5 runs of its rates per sample (as in the main report): the paired rounds of
+//! `bench_compare.py`, which alternate them with scipy's `RotationSpline` on the same keys, both
 //! in processes that stay up.
 
 #![allow(
@@ -49,19 +50,8 @@ fn wxyz(q: &UnitQuat) -> [f64; 4] {
 
 fn main() {
     let mut args = std::env::args().skip(1).peekable();
-    if args.peek().is_some_and(|a| a == "cubic-build") {
-        let reps: usize = args.nth(1).map_or(21, |s| s.parse().unwrap());
-        let keys = data::keys_s3(1000);
-        // One round per line read, in this one (warm) process.
-        for _ in std::io::stdin().lines() {
-            let ns = best(reps, 1, || {
-                black_box(
-                    CubicSpline::try_new(black_box(keys.clone()), None, CubicEnd::Scipy, false)
-                        .unwrap(),
-                );
-            });
-            println!("{ns}");
-        }
+    if args.peek().is_some_and(|a| a == "paired") {
+        paired();
         return;
     }
     let samples: usize = args.next().map_or(200_000, |s| s.parse().unwrap());
@@ -156,4 +146,37 @@ fn main() {
         },
     });
     println!("{report}");
+}
+
+/// The `paired` mode (see the module documentation).
+fn paired() {
+    let samples = 200_000;
+    let keys_1000 = data::keys_s3(1000);
+    let cubic = CubicSpline::try_new(data::keys_s3(20), None, CubicEnd::Scipy, false).unwrap();
+    let ts = data::params(cubic.domain(), samples);
+    let mut jets = vec![cubic.jet(ts[0]); samples];
+    let mut rates = vec![(DVec3::ZERO, DVec3::ZERO); samples];
+    for line in std::io::stdin().lines() {
+        let ns = match line.unwrap().as_str() {
+            "build" => best(21, 1, || {
+                black_box(
+                    CubicSpline::try_new(
+                        black_box(keys_1000.clone()),
+                        None,
+                        CubicEnd::Scipy,
+                        false,
+                    )
+                    .unwrap(),
+                );
+            }),
+            "rates" => best(5, samples, || {
+                cubic.jet_many(black_box(&ts), &mut jets);
+                for (o, j) in rates.iter_mut().zip(&jets) {
+                    *o = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
+                }
+            }),
+            other => panic!("unknown request {other:?}"),
+        };
+        println!("{ns}");
+    }
 }
