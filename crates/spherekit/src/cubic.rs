@@ -697,6 +697,7 @@ impl<P: Manifold> CubicSpline<P> {
             w_perp,
             rho,
             sinc,
+            sin_cos: (sn, cs),
         }
     }
 
@@ -713,8 +714,9 @@ impl<P: Manifold> CubicSpline<P> {
             w_perp,
             rho,
             sinc,
+            sin_cos,
         } = self.local(i, s);
-        let dsinc = sinc_deriv(rho);
+        let dsinc = sinc_deriv(rho, sin_cos);
         let a_par = acc.dot(&e);
         let a_perp = acc - e.clone() * a_par;
         let perp2 = w_perp.dot(&w_perp);
@@ -766,9 +768,10 @@ struct Local<P: Manifold> {
     /// The parts of `v′` along and across `e`.
     w_par: f64,
     w_perp: P::Vector,
-    /// `|v|` and `sin|v|/|v|`.
+    /// `|v|`, `sin|v|/|v|` and `(sin|v|, cos|v|)`.
     rho: f64,
     sinc: f64,
+    sin_cos: (f64, f64),
 }
 
 /// Checks a clamped velocity at `key` and returns its tangent projection.
@@ -794,14 +797,14 @@ fn check_velocity<P: Manifold>(
     Err(SplineError::InvalidEndVelocity { start, reason })
 }
 
-/// `σ′(x) = (x cos x − sin x)/x²`, the derivative of `sin x / x` (series below 0.1).
-fn sinc_deriv(x: f64) -> f64 {
+/// `σ′(x) = (x cos x − sin x)/x²`, the derivative of `sin x / x`, from `(sin x, cos x)` (series
+/// below 0.1).
+fn sinc_deriv(x: f64, (s, c): (f64, f64)) -> f64 {
     if x.abs() < 0.1 {
         let x2 = x * x;
         x * (-1.0 / 3.0
             + x2 * (1.0 / 30.0 + x2 * (-1.0 / 840.0 + x2 * (1.0 / 45360.0 - x2 / 3_991_680.0))))
     } else {
-        let (s, c) = math::sin_cos(x);
         (x * c - s) / (x * x)
     }
 }
@@ -1028,7 +1031,7 @@ impl SegConst {
                 sinc: math::sinc(theta),
                 inv_sinc: math::inv_sinc(theta),
                 kappa: kappa(theta),
-                dsinc: sinc_deriv(theta),
+                dsinc: sinc_deriv(theta, (sn, cs)),
                 c2: 2.0 / h,
                 c4: 4.0 / h,
                 c6: 6.0 * theta / (h * h),
@@ -2732,7 +2735,8 @@ mod tests {
 
     #[test]
     fn series_match_closed_forms_at_the_switch() {
-        for f in [sinc_deriv as fn(f64) -> f64, kappa] {
+        let dsinc: fn(f64) -> f64 = |x| sinc_deriv(x, math::sin_cos(x));
+        for f in [dsinc, kappa] {
             // One ulp apart across the switch: the series below, the closed form at 0.1.
             let below = f(0.1 - 1.5e-17);
             let above = f(0.1);
