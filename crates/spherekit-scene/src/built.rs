@@ -296,6 +296,28 @@ impl BuiltCurve {
         }
     }
 
+    /// [`Built::with_info`] on the curve of any sphere: one copy of the code for the three
+    /// (for the facts a method's build function adds after `on_every_sphere!`).
+    pub(crate) fn with_info(mut self, key: &str, value: Value) -> Self {
+        let info = match &mut self {
+            Self::S2(b) => &mut b.info,
+            Self::S3(b) => &mut b.info,
+            Self::Sn(b) => &mut b.info,
+        };
+        info.insert(key.into(), value);
+        self
+    }
+
+    /// [`Built::with_order`] on the curve of any sphere.
+    pub(crate) fn with_order(mut self, order: usize) -> Self {
+        match &mut self {
+            Self::S2(b) => b.order = order,
+            Self::S3(b) => b.order = order,
+            Self::Sn(b) => b.order = order,
+        }
+        self
+    }
+
     /// The continuity report and the construction's guaranteed order at the joints.
     #[must_use]
     pub fn continuity(&self) -> (Vec<JointContinuity>, usize) {
