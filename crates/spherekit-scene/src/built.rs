@@ -68,81 +68,33 @@ impl<P: ScenePoint> Built<P> {
     }
 
     fn sample_into(&self, scene: &Scene, options: SampleOptions, out: &mut Map<String, Value>) {
-        let deriv = options.deriv;
         let domain = self.curve.domain();
         let ts = scene.parameters(domain);
-        let mut points = Vec::with_capacity(ts.len());
-        let mut velocity = Vec::new();
-        let mut acceleration = Vec::new();
-        let mut omega = Vec::new();
-        let mut alpha = Vec::new();
+        let mut rows = Rows {
+            quaternions: P::angular(&self.curve.jet(domain[0]), false).is_some(),
+            controls: self.controls.iter().map(ScenePoint::coords).collect(),
+            auxiliary: self.auxiliary.iter().map(ScenePoint::coords).collect(),
+            continuity: options.continuity.then(|| self.continuity()),
+            ..Rows::default()
+        };
         // Batch evaluation: one call for all parameters, the same values as `jet`/`eval`.
-        if deriv {
+        if options.deriv {
             let mut jets = vec![self.curve.jet(domain[0]); ts.len()];
             self.curve.jet_many(&ts, &mut jets);
             for jet in &jets {
-                if let Some((w, a)) = P::angular(jet, options.body_frame) {
-                    omega.push(json!(w));
-                    alpha.push(json!(a));
+                if let Some(w) = P::angular(jet, options.body_frame) {
+                    rows.angular.push(w);
                 }
-                velocity.push(json!(P::vector_coords(&jet.velocity)));
-                acceleration.push(json!(P::vector_coords(&jet.acceleration)));
-                points.push(json!(jet.point.coords()));
+                rows.velocity.push(P::vector_coords(&jet.velocity));
+                rows.acceleration.push(P::vector_coords(&jet.acceleration));
+                rows.points.push(jet.point.coords());
             }
         } else {
             let mut ps = vec![self.curve.eval(domain[0]); ts.len()];
             self.curve.eval_many(&ts, &mut ps);
-            points.extend(ps.iter().map(|p| json!(p.coords())));
+            rows.points.extend(ps.iter().map(ScenePoint::coords));
         }
-        if scene.scalar_last && P::angular(&self.curve.jet(domain[0]), false).is_some() {
-            for list in [&mut points, &mut velocity, &mut acceleration] {
-                for v in list.iter_mut() {
-                    if let Value::Array(a) = v {
-                        a.rotate_left(1);
-                    }
-                }
-            }
-        }
-        out.insert("domain".into(), json!(domain));
-        out.insert("t".into(), json!(ts));
-        out.insert("points".into(), Value::Array(points));
-        if deriv {
-            out.insert("velocity".into(), Value::Array(velocity));
-            out.insert("acceleration".into(), Value::Array(acceleration));
-            if !omega.is_empty() {
-                out.insert("angular_velocity".into(), Value::Array(omega));
-                out.insert("angular_acceleration".into(), Value::Array(alpha));
-            }
-        }
-        let reorder = scene.scalar_last && P::angular(&self.curve.jet(domain[0]), false).is_some();
-        let list = |ps: &[P]| {
-            Value::Array(
-                ps.iter()
-                    .map(|p| {
-                        let mut c = p.coords();
-                        if reorder {
-                            c.rotate_left(1);
-                        }
-                        json!(c)
-                    })
-                    .collect(),
-            )
-        };
-        if !self.controls.is_empty() {
-            out.insert("controls".into(), list(&self.controls));
-        }
-        if !self.auxiliary.is_empty() {
-            out.insert("auxiliary".into(), list(&self.auxiliary));
-        }
-        if !self.info.is_empty() {
-            out.insert("info".into(), Value::Object(self.info.clone()));
-        }
-        if options.continuity {
-            out.insert(
-                "continuity".into(),
-                continuity_json(&self.continuity(), self.order),
-            );
-        }
+        rows.write(scene, options, domain, ts, &self.info, self.order, out);
     }
 
     fn sample_field(&self, scene: &Scene, field: &str) -> Option<Vec<f64>> {
@@ -197,6 +149,82 @@ impl<P: ScenePoint> Built<P> {
             }
             _ => return None,
         })
+    }
+}
+
+/// The samples of one curve as [`Built::sample_into`] takes them, before they are written as
+/// JSON by one copy of the code for every sphere.
+#[derive(Default)]
+struct Rows {
+    /// The curve is on S³ (its rows are quaternions, `w` first).
+    quaternions: bool,
+    points: Vec<Vec<f64>>,
+    velocity: Vec<Vec<f64>>,
+    acceleration: Vec<Vec<f64>>,
+    /// Angular velocity and acceleration per sample (S³ only).
+    angular: Vec<([f64; 3], [f64; 3])>,
+    controls: Vec<Vec<f64>>,
+    auxiliary: Vec<Vec<f64>>,
+    continuity: Option<Vec<JointContinuity>>,
+}
+
+impl Rows {
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "the curve's facts besides its samples, passed on from Built"
+    )]
+    fn write(
+        self,
+        scene: &Scene,
+        options: SampleOptions,
+        domain: [f64; 2],
+        ts: Vec<f64>,
+        info: &Map<String, Value>,
+        order: usize,
+        out: &mut Map<String, Value>,
+    ) {
+        // Quaternion rows in the scene's order (`xyzw` moves the scalar last).
+        let reorder = scene.scalar_last && self.quaternions;
+        let list = |rows: Vec<Vec<f64>>| {
+            Value::Array(
+                rows.into_iter()
+                    .map(|mut c| {
+                        if reorder {
+                            c.rotate_left(1);
+                        }
+                        json!(c)
+                    })
+                    .collect(),
+            )
+        };
+        out.insert("domain".into(), json!(domain));
+        out.insert("t".into(), json!(ts));
+        out.insert("points".into(), list(self.points));
+        if options.deriv {
+            out.insert("velocity".into(), list(self.velocity));
+            out.insert("acceleration".into(), list(self.acceleration));
+            if !self.angular.is_empty() {
+                let (omega, alpha): (Vec<Value>, Vec<Value>) = self
+                    .angular
+                    .iter()
+                    .map(|(w, a)| (json!(w), json!(a)))
+                    .unzip();
+                out.insert("angular_velocity".into(), Value::Array(omega));
+                out.insert("angular_acceleration".into(), Value::Array(alpha));
+            }
+        }
+        if !self.controls.is_empty() {
+            out.insert("controls".into(), list(self.controls));
+        }
+        if !self.auxiliary.is_empty() {
+            out.insert("auxiliary".into(), list(self.auxiliary));
+        }
+        if !info.is_empty() {
+            out.insert("info".into(), Value::Object(info.clone()));
+        }
+        if let Some(report) = self.continuity {
+            out.insert("continuity".into(), continuity_json(&report, order));
+        }
     }
 }
 
@@ -294,6 +322,28 @@ impl BuiltCurve {
             Self::S3(b) => b.sample_into(scene, options, out),
             Self::Sn(b) => b.sample_into(scene, options, out),
         }
+    }
+
+    /// [`Built::with_info`] on the curve of any sphere: one copy of the code for the three
+    /// (for the facts a method's build function adds after `on_every_sphere!`).
+    pub(crate) fn with_info(mut self, key: &str, value: Value) -> Self {
+        let info = match &mut self {
+            Self::S2(b) => &mut b.info,
+            Self::S3(b) => &mut b.info,
+            Self::Sn(b) => &mut b.info,
+        };
+        info.insert(key.into(), value);
+        self
+    }
+
+    /// [`Built::with_order`] on the curve of any sphere.
+    pub(crate) fn with_order(mut self, order: usize) -> Self {
+        match &mut self {
+            Self::S2(b) => b.order = order,
+            Self::S3(b) => b.order = order,
+            Self::Sn(b) => b.order = order,
+        }
+        self
     }
 
     /// The continuity report and the construction's guaranteed order at the joints.

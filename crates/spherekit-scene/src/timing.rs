@@ -8,7 +8,7 @@
 //! file knows about them.
 
 use serde_json::{Value, json};
-use spherekit::{ArcLength, Curve, DomainError, Extrapolate, Extrapolated};
+use spherekit::{ArcLength, ArcLengthInfo, Curve, DomainError, Extrapolate, Extrapolated};
 
 use crate::built::{Built, BuiltCurve, ScenePoint};
 use crate::error::{SceneError, field_error};
@@ -97,6 +97,22 @@ pub(crate) fn parse_extrapolate(
     Ok(policy)
 }
 
+/// `info.arclength`: what the arc-length table did (not generic: one copy for every sphere).
+fn arclength_json(length: f64, accuracy: f64, info: &ArcLengthInfo) -> Value {
+    let stalls: Vec<Value> = info
+        .stalls
+        .iter()
+        .map(|s| json!({ "s": s.s, "t": s.t }))
+        .collect();
+    json!({
+        "length": length,
+        "accuracy": accuracy,
+        "cells": info.cells,
+        "unresolved": info.unresolved,
+        "stalls": stalls,
+    })
+}
+
 impl<P: ScenePoint> Built<P> {
     /// The curve reparametrised and wrapped in its extrapolation policy; `info.arclength` says
     /// what the arc-length table did (length, cells, and the stalls where the speed vanishes).
@@ -110,21 +126,9 @@ impl<P: ScenePoint> Built<P> {
             Parametrization::ArcLength => {
                 let arc = ArcLength::try_new(self.curve)
                     .map_err(|e| field_error("parametrization", e.to_string()))?;
-                let info = arc.info();
-                let stalls: Vec<Value> = info
-                    .stalls
-                    .iter()
-                    .map(|s| json!({ "s": s.s, "t": s.t }))
-                    .collect();
                 self.info.insert(
                     "arclength".into(),
-                    json!({
-                        "length": arc.length(),
-                        "accuracy": arc.accuracy(),
-                        "cells": info.cells,
-                        "unresolved": info.unresolved,
-                        "stalls": stalls,
-                    }),
+                    arclength_json(arc.length(), arc.accuracy(), arc.info()),
                 );
                 Box::new(arc)
             }

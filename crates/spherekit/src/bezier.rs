@@ -299,6 +299,17 @@ pub struct CubicSegment<P: Manifold> {
     arcs: [FixedArc<P::Vector>; 3],
 }
 
+#[cfg(any(test, target_arch = "wasm32"))]
+impl CubicSegment<crate::SnPoint> {
+    /// The same segment on the point type `Q` ([`crate::recast`]).
+    pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CubicSegment<Q> {
+        CubicSegment {
+            ctrl: self.ctrl.each_ref().map(|p| to.point(p)),
+            arcs: self.arcs.each_ref().map(|a| a.recast(to)),
+        }
+    }
+}
+
 impl<P: Manifold> CubicSegment<P> {
     /// Precomputes the segment.
     ///
@@ -313,15 +324,6 @@ impl<P: Manifold> CubicSegment<P> {
         };
         let arcs = [arc(0)?, arc(1)?, arc(2)?];
         Ok(Self { ctrl, arcs })
-    }
-
-    /// The same segment on the point type `Q` ([`crate::recast`]).
-    #[cfg(any(test, target_arch = "wasm32"))]
-    pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CubicSegment<Q> {
-        CubicSegment {
-            ctrl: self.ctrl.each_ref().map(|p| to.point(p)),
-            arcs: self.arcs.each_ref().map(|a| a.recast(to)),
-        }
     }
 
     /// The control points.

@@ -5,6 +5,8 @@
 //! vectors of ℝ^(m+1) (ℝ⁴ for quaternions), projected back onto the sphere.
 
 use crate::ambient::Ambient;
+#[cfg(any(test, target_arch = "wasm32"))]
+use crate::ambient::VecN;
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::geodesic::check_chain;
@@ -68,6 +70,53 @@ pub struct CatmullRomNlerp<P: Manifold> {
     ratios: Vec<[f64; 2]>,
 }
 
+/// The tangent ratios `hᵢ/(tᵢ₊₁ − tᵢ₋₁)`, `hᵢ/(tᵢ₊₂ − tᵢ)` of every segment of the points
+/// `vectors` (`c₋₁ … cₙ₊₁`) at `knots`, after the check that no Bézier point of a segment is on
+/// the far side of the origin (normalising would pass through it).
+fn ratios<V: Ambient>(vectors: &[V], knots: &Knots) -> Result<Vec<[f64; 2]>, SplineError> {
+    let k = knots.as_slice();
+    let n = k.len() - 1;
+    let width = |i: usize| knots.width(i);
+    // The spans tᵢ₊₁ − tᵢ₋₁ of the keys c₀ … cₙ, with the end intervals mirrored.
+    let span = |i: usize| match i {
+        0 => 2.0 * width(0),
+        _ if i == n => 2.0 * width(n - 1),
+        _ => k[i + 1] - k[i - 1],
+    };
+    let mut ratios = Vec::with_capacity(n);
+    for i in 0..n {
+        let r = [width(i) / span(i), width(i) / span(i + 1)];
+        // Bézier points cᵢ, dᵢ, eᵢ, cᵢ₊₁ from the weights at the ends (τ = 0, 1, and the
+        // first derivatives there give dᵢ − cᵢ and cᵢ₊₁ − eᵢ times 3).
+        let combine = |w: [f64; 4]| -> V {
+            (0..4).fold(vectors[i].zeros_like(), |acc, j| {
+                acc + vectors[i + j].clone() * w[j]
+            })
+        };
+        let (w0, w1) = (weights(0.0, r), weights(1.0, r));
+        let (c0, c1) = (vectors[i + 1].clone(), vectors[i + 2].clone());
+        let d = c0.clone() + combine(w0[1]) * (1.0 / 3.0);
+        let e = c1.clone() - combine(w1[1]) * (1.0 / 3.0);
+        let m = c0.clone() + c1.clone();
+        let lowest = [c0, d, e, c1]
+            .iter()
+            .map(|x| x.dot(&m))
+            .fold(f64::INFINITY, f64::min);
+        if lowest.is_nan() || lowest <= 1e-12 * m.length() {
+            return Err(SplineError::ThroughOrigin { index: i + 1 });
+        }
+        ratios.push(r);
+    }
+    Ok(ratios)
+}
+
+/// [`ratios`] of the vectors as vectors of `VecN` (the wasm build's one copy).
+#[cfg(any(test, target_arch = "wasm32"))]
+fn ratios_in_vecn<V: Ambient>(vectors: &[V], knots: &Knots) -> Result<Vec<[f64; 2]>, SplineError> {
+    let vectors: Vec<VecN> = vectors.iter().map(|v| VecN::new(v.to_vec())).collect();
+    ratios(&vectors, knots)
+}
+
 /// The weights of `cᵢ₋₁, cᵢ, cᵢ₊₁, cᵢ₊₂` in `c(τ)` and their first two `τ`-derivatives, for the
 /// tangent ratios `a = hᵢ/(tᵢ₊₁ − tᵢ₋₁)`, `b = hᵢ/(tᵢ₊₂ − tᵢ)` (cubic Hermite form of the Bézier
 /// segment: `c = H₀₀cᵢ + H₁₀·hᵢTᵢ + H₀₁cᵢ₊₁ + H₁₁·hᵢTᵢ₊₁`). Not generic, so one copy serves
@@ -110,40 +159,13 @@ impl<P: Manifold> CatmullRomNlerp<P> {
     pub fn try_new(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
         check_chain(&points, 4)?;
         let knots = Knots::or_uniform(knots, points.len() - 2)?;
-        let k = knots.as_slice();
-        let n = k.len() - 1;
-        let width = |i: usize| knots.width(i);
-        // The spans tᵢ₊₁ − tᵢ₋₁ of the keys c₀ … cₙ, with the end intervals mirrored.
-        let span = |i: usize| match i {
-            0 => 2.0 * width(0),
-            _ if i == n => 2.0 * width(n - 1),
-            _ => k[i + 1] - k[i - 1],
-        };
         let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
-        let mut ratios = Vec::with_capacity(n);
-        for i in 0..n {
-            let r = [width(i) / span(i), width(i) / span(i + 1)];
-            // Bézier points cᵢ, dᵢ, eᵢ, cᵢ₊₁ from the weights at the ends (τ = 0, 1, and the
-            // first derivatives there give dᵢ − cᵢ and cᵢ₊₁ − eᵢ times 3).
-            let combine = |w: [f64; 4]| -> P::Vector {
-                (0..4).fold(vectors[i].zeros_like(), |acc, j| {
-                    acc + vectors[i + j].clone() * w[j]
-                })
-            };
-            let (w0, w1) = (weights(0.0, r), weights(1.0, r));
-            let (c0, c1) = (vectors[i + 1].clone(), vectors[i + 2].clone());
-            let d = c0.clone() + combine(w0[1]) * (1.0 / 3.0);
-            let e = c1.clone() - combine(w1[1]) * (1.0 / 3.0);
-            let m = c0.clone() + c1.clone();
-            let lowest = [c0, d, e, c1]
-                .iter()
-                .map(|x| x.dot(&m))
-                .fold(f64::INFINITY, f64::min);
-            if lowest.is_nan() || lowest <= 1e-12 * m.length() {
-                return Err(SplineError::ThroughOrigin { index: i + 1 });
-            }
-            ratios.push(r);
-        }
+        // Natively in the point type's vectors; the wasm build checks every sphere's in `VecN`
+        // (one copy of the code; the same bits, `tests::the_ratios_are_the_same_in_vecn`).
+        #[cfg(not(target_arch = "wasm32"))]
+        let ratios = ratios(&vectors, &knots)?;
+        #[cfg(target_arch = "wasm32")]
+        let ratios = ratios_in_vecn(&vectors, &knots)?;
         Ok(Self {
             points,
             vectors,
@@ -219,5 +241,55 @@ impl<P: Manifold> Curve for CatmullRomNlerp<P> {
         let c = self.combine(i, weights(tau, self.ratios[i])[0], 1.0);
         let r = c.length();
         P::from_vector_unchecked(c * (1.0 / r))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::*;
+    use crate::S2Point;
+    use crate::recast::keys;
+
+    /// The wasm build checks the segments in `VecN`; the ratios and the errors must be those of
+    /// the point type's own vectors, bit for bit.
+    #[test]
+    fn the_ratios_are_the_same_in_vecn() {
+        fn check<P: Manifold>(points: &[P]) -> [usize; 2] {
+            let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
+            let n = points.len() - 2;
+            let uneven: Vec<f64> = (0..n).map(|i| (i * i) as f64 * 0.3 + i as f64).collect();
+            let mut outcomes = [0, 0];
+            for knots in [Knots::uniform(n), Knots::try_new(uneven).unwrap()] {
+                let native = ratios(&vectors, &knots);
+                let in_vecn = ratios_in_vecn(&vectors, &knots);
+                outcomes[usize::from(native.is_err())] += 1;
+                assert_eq!(format!("{native:?}"), format!("{in_vecn:?}"), "{points:?}");
+            }
+            outcomes
+        }
+        // Keys 100°, 170° and 110° apart: the ambient curve passes within 0.02 of the origin.
+        let on_equator = |deg: f64| {
+            let a = deg.to_radians();
+            S2Point::try_new(DVec3::new(a.cos(), a.sin(), 0.0)).unwrap()
+        };
+        let through: Vec<S2Point> = [100.0, 0.0, 170.0, 60.0].map(on_equator).to_vec();
+        let mut outcomes = [0, 0];
+        for [ok, err] in keys::on_s2()
+            .iter()
+            .chain([&through])
+            .map(|p| check(p))
+            .chain(keys::on_s3().iter().map(|p| check(p)))
+        {
+            outcomes[0] += ok;
+            outcomes[1] += err;
+        }
+        assert!(
+            outcomes[0] >= 8 && outcomes[1] >= 2,
+            "built {}, through the origin {}",
+            outcomes[0],
+            outcomes[1]
+        );
     }
 }

@@ -235,6 +235,112 @@ fn edge_error(index: usize, edges: usize, closed: bool, antipodal: bool) -> Spli
 /// (`docs/derivations.md#closed-loops`).
 pub(crate) const LOOP_SPEED_TOLERANCE: f64 = 1e-10;
 
+/// One piece of a corner-blend curve as [`plan`] lays it out, before its segment is formed.
+#[derive(Clone, Copy, Debug)]
+enum Piece {
+    /// The straight part of edge `edge`, from `start` (the angle along the edge) for `angle`.
+    Straight { edge: usize, start: f64, angle: f64 },
+    /// The corner from edge `edge` into the next: `alpha` back along `edge`, `beta` along the
+    /// next edge.
+    Corner { edge: usize, alpha: f64, beta: f64 },
+}
+
+/// The layout of a corner-blend curve: its pieces, their knots, the resolved cuts and the blend
+/// polynomials.
+struct Plan {
+    pieces: Vec<Piece>,
+    knots: Knots,
+    cuts: Vec<[f64; 2]>,
+    poly: SmoothingPolynomials,
+}
+
+/// The [`Plan`] of a corner-blend curve from the edges' angles `thetas` alone
+/// ([`CornerCore::build`]; not generic, so one copy serves every sphere and flow).
+fn plan(
+    thetas: &[f64],
+    order: usize,
+    cuts: &CornerCuts,
+    timing: CornerTiming,
+    closed: bool,
+) -> Result<Plan, SplineError> {
+    let poly = check_order(order)?;
+    let m = thetas.len();
+    let cuts = cuts.resolve(if closed { m } else { m - 1 }, closed)?;
+    if !timing.start.is_finite() {
+        return Err(SplineError::InvalidParameter {
+            name: "start",
+            reason: format!("must be a finite number, got {}", timing.start),
+        });
+    }
+    if !(timing.speed.is_finite() && timing.speed > 0.0) {
+        return Err(SplineError::InvalidParameter {
+            name: "speed",
+            reason: format!("must be a positive number, got {}", timing.speed),
+        });
+    }
+    let mut pieces = Vec::with_capacity(2 * m);
+    let mut t = vec![timing.start];
+    let mut omega = timing.speed;
+    // The angular speed of each piece at its start, for the timing error.
+    let mut speeds = Vec::with_capacity(2 * m);
+    let mut push = |piece: Piece, width: f64, t: &mut Vec<f64>, omega: f64| {
+        let last = t[t.len() - 1];
+        t.push(last + width);
+        pieces.push(piece);
+        speeds.push(omega);
+    };
+    for (j, &theta) in thetas.iter().enumerate() {
+        // Straight part of edge j: from Q_j⁺ (or P_0) to Q_{j+1}⁻ (or P_M).
+        let out_cut = match (closed, j) {
+            (true, _) => cuts[(j + m - 1) % m][1],
+            (false, 0) => 0.0,
+            (false, _) => cuts[j - 1][1],
+        };
+        let in_cut = if closed || j + 1 < m { cuts[j][0] } else { 0.0 };
+        let cut_start = out_cut * theta;
+        let straight = (1.0 - out_cut - in_cut) * theta;
+        // Cuts that add up to the whole edge (to rounding) leave no straight part.
+        if straight > 4.0 * f64::EPSILON * theta {
+            let piece = Piece::Straight {
+                edge: j,
+                start: cut_start,
+                angle: straight,
+            };
+            push(piece, straight / omega, &mut t, omega);
+        }
+        if closed || j + 1 < m {
+            // Corner at P_{j+1}: α = incoming cut on edge j, β = outgoing cut on edge j+1.
+            let next_theta = thetas[(j + 1) % m];
+            let alpha = cuts[j][0] * theta;
+            let beta = cuts[j][1] * next_theta;
+            let piece = Piece::Corner {
+                edge: j,
+                alpha,
+                beta,
+            };
+            push(piece, alpha / omega, &mut t, omega);
+            omega *= beta / alpha;
+        }
+    }
+    let returns = (omega / timing.speed - 1.0).abs() <= LOOP_SPEED_TOLERANCE;
+    if closed && !returns {
+        return Err(cut_error(format!(
+            "closes the loop at {:e} times the starting speed: the speed is multiplied by β/α (the outgoing over the incoming cut angle) at each corner, and around a loop these factors must multiply to 1 (equal incoming and outgoing fractions do)",
+            omega / timing.speed
+        )));
+    }
+    let knots = match Knots::try_new(t.clone()) {
+        Ok(k) => k,
+        Err(_) => return Err(timing_error(&t, &speeds)),
+    };
+    Ok(Plan {
+        pieces,
+        knots,
+        cuts,
+        poly,
+    })
+}
+
 impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
     /// `points` are the polyline's vertices `P_0 … P_M` (a closed polygon's with `P_M = P_0`),
     /// `edges[j]` the flow and angle of edge `P_j → P_{j+1}`.
@@ -253,92 +359,38 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
         timing: CornerTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        let poly = check_order(order)?;
+        let thetas: Vec<f64> = edges.iter().map(|e| e.1).collect();
+        let Plan {
+            pieces,
+            knots,
+            cuts,
+            poly,
+        } = plan(&thetas, order, cuts, timing, closed)?;
         let m = edges.len();
-        let cuts = cuts.resolve(if closed { m } else { m - 1 }, closed)?;
-        if !timing.start.is_finite() {
-            return Err(SplineError::InvalidParameter {
-                name: "start",
-                reason: format!("must be a finite number, got {}", timing.start),
-            });
-        }
-        if !(timing.speed.is_finite() && timing.speed > 0.0) {
-            return Err(SplineError::InvalidParameter {
-                name: "speed",
-                reason: format!("must be a positive number, got {}", timing.speed),
-            });
-        }
-        let mut segments = Vec::with_capacity(2 * m);
-        let mut t = vec![timing.start];
-        let mut omega = timing.speed;
-        // The angular speed of each piece at its start, for the timing error.
-        let mut speeds = Vec::with_capacity(2 * m);
-        let mut push = |segment: Segment<V, F>, t: &mut Vec<f64>, omega: f64| {
-            let last = t[t.len() - 1];
-            t.push(last + segment.width);
-            segments.push(segment);
-            speeds.push(omega);
-        };
-        for (j, (flow, theta)) in edges.iter().enumerate() {
-            // Straight part of edge j: from Q_j⁺ (or P_0) to Q_{j+1}⁻ (or P_M).
-            let out_cut = match (closed, j) {
-                (true, _) => cuts[(j + m - 1) % m][1],
-                (false, 0) => 0.0,
-                (false, _) => cuts[j - 1][1],
-            };
-            let in_cut = if closed || j + 1 < m { cuts[j][0] } else { 0.0 };
-            let cut_start = out_cut * theta;
-            let straight = (1.0 - out_cut - in_cut) * theta;
-            // Cuts that add up to the whole edge (to rounding) leave no straight part.
-            if straight > 4.0 * f64::EPSILON * theta {
-                push(
-                    Segment {
-                        base: flow.apply(cut_start, &points[j]),
-                        outer: flow.clone(),
-                        outer_angle: straight,
-                        inner: None,
-                        weights: Weights::Linear,
-                        width: straight / omega,
-                    },
-                    &mut t,
-                    omega,
-                );
-            }
-            if closed || j + 1 < m {
-                // Corner at P_{j+1}: α = incoming cut on edge j, β = outgoing cut on edge j+1.
-                let (next, next_theta) = &edges[(j + 1) % m];
-                let alpha = cuts[j][0] * theta;
-                let beta = cuts[j][1] * next_theta;
-                push(
-                    Segment {
-                        base: points[j + 1].clone(),
-                        outer: next.clone(),
-                        outer_angle: beta,
-                        inner: Some((flow.clone(), alpha)),
-                        weights: Weights::Corner,
-                        width: alpha / omega,
-                    },
-                    &mut t,
-                    omega,
-                );
-                omega *= beta / alpha;
-            }
-        }
-        let returns = (omega / timing.speed - 1.0).abs() <= LOOP_SPEED_TOLERANCE;
-        if closed && !returns {
-            return Err(cut_error(format!(
-                "closes the loop at {:e} times the starting speed: the speed is multiplied by β/α (the outgoing over the incoming cut angle) at each corner, and around a loop these factors must multiply to 1 (equal incoming and outgoing fractions do)",
-                omega / timing.speed
-            )));
-        }
-        let knots = match Knots::try_new(t.clone()) {
-            Ok(k) => k,
-            Err(_) => return Err(timing_error(&t, &speeds)),
-        };
-        // Use the exact knot widths so that u = (t − t_i)/width is consistent with `locate`.
-        for (i, s) in segments.iter_mut().enumerate() {
-            s.width = knots.width(i);
-        }
+        // Each segment's width is its exact knot width, so that u = (t − t_i)/width is
+        // consistent with `locate`.
+        let segments = pieces
+            .iter()
+            .enumerate()
+            .map(|(i, piece)| match *piece {
+                Piece::Straight { edge, start, angle } => Segment {
+                    base: edges[edge].0.apply(start, &points[edge]),
+                    outer: edges[edge].0.clone(),
+                    outer_angle: angle,
+                    inner: None,
+                    weights: Weights::Linear,
+                    width: knots.width(i),
+                },
+                Piece::Corner { edge, alpha, beta } => Segment {
+                    base: points[edge + 1].clone(),
+                    outer: edges[(edge + 1) % m].0.clone(),
+                    outer_angle: beta,
+                    inner: Some((edges[edge].0.clone(), alpha)),
+                    weights: Weights::Corner,
+                    width: knots.width(i),
+                },
+            })
+            .collect();
         Ok(Self {
             closed,
             knots,

@@ -8,6 +8,8 @@ use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
+#[cfg(any(test, target_arch = "wasm32"))]
+use crate::recast::{Recast, to_sn};
 
 /// Checks that there are at least `min` points and no antipodal neighbours.
 pub(crate) fn check_chain<P: Manifold>(points: &[P], min: usize) -> Result<(), SplineError> {
@@ -134,8 +136,42 @@ impl<P: Manifold> GeodesicSpline<P> {
         Self::build(wrapped(&points), knots, true)
     }
 
-    /// The arcs between consecutive `points` (the loop's already wrapped).
+    /// The arcs between consecutive `points` (the loop's already wrapped; at least two):
+    /// natively on `P` itself, in the wasm build once on S^m for every point type
+    /// ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
     fn build(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        #[cfg(not(target_arch = "wasm32"))]
+        return Self::construct(points, knots, closed);
+        #[cfg(target_arch = "wasm32")]
+        return Self::construct_on_sn(points, knots, closed);
+    }
+
+    /// [`construct`](Self::construct) on the points as points of S^m, the result converted
+    /// back.
+    #[cfg(any(test, target_arch = "wasm32"))]
+    fn construct_on_sn(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+        let to = Recast::to(&points[0]);
+        let sn = points.iter().map(to_sn).collect();
+        let c = GeodesicSpline::construct(sn, knots, closed)?;
+        Ok(Self {
+            points: to.points(&c.points),
+            knots: c.knots,
+            arcs: c
+                .arcs
+                .iter()
+                .map(|a| Arc {
+                    start: to.vector(&a.start),
+                    direction: to.vector(&a.direction),
+                    theta: a.theta,
+                    rate: a.rate,
+                })
+                .collect(),
+            closed: c.closed,
+        })
+    }
+
+    /// The construction of [`build`](Self::build) on `P`.
+    fn construct(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
         let last = points.len() - 2;
         let arcs = points
             .windows(2)
@@ -356,5 +392,40 @@ impl<P: Manifold> NlerpSpline<P> {
             velocity: dc,
             acceleration: ddc,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::recast::keys;
+
+    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
+    /// each `f64` in the shortest form that reads back to the same bits).
+    #[test]
+    fn the_construction_gives_the_same_bits_on_sn() {
+        fn check<P: Manifold>(points: &[P]) -> usize {
+            let mut built = 0;
+            for closed in [false, true] {
+                let points = if closed {
+                    wrapped(points)
+                } else {
+                    points.to_vec()
+                };
+                let n = points.len();
+                let uneven: Vec<f64> = (0..n).map(|i| (i * i) as f64 * 0.3 + i as f64).collect();
+                for knots in [Knots::uniform(n), Knots::try_new(uneven).unwrap()] {
+                    let native = GeodesicSpline::construct(points.clone(), knots.clone(), closed);
+                    let on_sn = GeodesicSpline::construct_on_sn(points.clone(), knots, closed);
+                    built += usize::from(native.is_ok());
+                    assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{points:?}");
+                }
+            }
+            built
+        }
+        let built: usize = keys::on_s2().iter().map(|p| check(p)).sum::<usize>()
+            + keys::on_s3().iter().map(|p| check(p)).sum::<usize>();
+        assert!(built > 30, "{built} curves built");
     }
 }

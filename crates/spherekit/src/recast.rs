@@ -45,12 +45,12 @@ impl<Q: Manifold> Recast<Q> {
     }
 
     /// The point of `Q` with the coordinates of `p`.
-    pub(crate) fn point<P: Manifold>(&self, p: &P) -> Q {
-        Q::from_vector_unchecked(self.vector(&p.to_vector()))
+    pub(crate) fn point(&self, p: &SnPoint) -> Q {
+        Q::from_vector_unchecked(self.like.with_coords(p.coords()))
     }
 
     /// [`point`](Self::point) of every point of `ps`.
-    pub(crate) fn points<P: Manifold>(&self, ps: &[P]) -> Vec<Q> {
+    pub(crate) fn points(&self, ps: &[SnPoint]) -> Vec<Q> {
         ps.iter().map(|p| self.point(p)).collect()
     }
 }

@@ -60,23 +60,23 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     };
     input.params.finish()?;
     let closed = input.closed;
-    Ok(on_every_sphere!(input.points, |p| {
+    let (knots, used);
+    let built = on_every_sphere!(input.points, |p| {
         let curve = if closed {
             ArcBlend::try_new_closed_with(p.clone(), order, timing.clone())?
         } else {
             ArcBlend::try_new_with(p.clone(), order, timing.clone())?
         };
-        let knots = curve.knots().to_vec();
-        let used = curve.timing().name();
-        let built = Built::new(curve, p)
-            .with_info("knots", json!(knots))
-            .with_order(order);
-        // `info.timing` says when the curve is not on the book's knots (auto switched away
-        // from them, or another timing was asked for).
-        if used == "book" {
-            built
-        } else {
-            built.with_info("timing", json!(used))
-        }
-    }))
+        knots = curve.knots().to_vec();
+        used = curve.timing().name();
+        Built::new(curve, p)
+    });
+    let built = built.with_info("knots", json!(knots)).with_order(order);
+    // `info.timing` says when the curve is not on the book's knots (auto switched away from
+    // them, or another timing was asked for).
+    Ok(if used == "book" {
+        built
+    } else {
+        built.with_info("timing", json!(used))
+    })
 }

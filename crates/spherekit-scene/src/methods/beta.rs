@@ -103,20 +103,24 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     };
     input.params.finish()?;
     let closed = input.closed;
-    Ok(on_every_sphere!(input.points, |p| {
+    let solved;
+    let built = on_every_sphere!(input.points, |p| {
         let curve = if closed {
             BetaSpline::try_new_closed(p.clone(), &beta)?
         } else {
             BetaSpline::try_new(p.clone(), &beta)?
         };
-        let mut built = Built::new(curve.clone(), p).with_controls(curve.controls().to_vec());
-        built.auxiliary = curve.auxiliary().to_vec();
-        if let Some(info) = curve.solve_info() {
-            built = built
-                .with_info("solver", json!(info.solver.name()))
-                .with_info("iterations", json!(info.iterations))
-                .with_info("residual", json!(info.residual));
-        }
+        solved = curve.solve_info();
+        let (controls, auxiliary) = (curve.controls().to_vec(), curve.auxiliary().to_vec());
+        let mut built = Built::new(curve, p).with_controls(controls);
+        built.auxiliary = auxiliary;
         built
-    }))
+    });
+    Ok(match solved {
+        Some(info) => built
+            .with_info("solver", json!(info.solver.name()))
+            .with_info("iterations", json!(info.iterations))
+            .with_info("residual", json!(info.residual)),
+        None => built,
+    })
 }

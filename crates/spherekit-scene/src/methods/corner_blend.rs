@@ -133,7 +133,8 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     {
         *pairs = vec![pairs[0]; corners];
     }
-    match input.points {
+    let knots;
+    let built = match input.points {
         Points::S3(keys) => {
             // The book's orientation construction (rotations act by left multiplication).
             let curve = if closed {
@@ -141,12 +142,8 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
             } else {
                 CornerBlendS3::try_with(keys.clone(), order, &cuts, timing)?
             };
-            let knots = curve.knots().to_vec();
-            Ok(BuiltCurve::S3(
-                Built::new(curve, keys)
-                    .with_info("knots", json!(knots))
-                    .with_order(order),
-            ))
+            knots = curve.knots().to_vec();
+            BuiltCurve::S3(Built::new(curve, keys))
         }
         Points::S2(p) if bends.is_some() => {
             let bends = bends.unwrap_or_default();
@@ -155,23 +152,18 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
             } else {
                 CornerBlend::try_with_arcs(p.clone(), order, &cuts, timing, &bends)?
             };
-            let knots = curve.knots().to_vec();
-            Ok(BuiltCurve::S2(
-                Built::new(curve, p)
-                    .with_info("knots", json!(knots))
-                    .with_order(order),
-            ))
+            knots = curve.knots().to_vec();
+            BuiltCurve::S2(Built::new(curve, p))
         }
-        points => Ok(on_every_sphere!(points, |p| {
+        points => on_every_sphere!(points, |p| {
             let curve = if closed {
                 CornerBlend::try_with_closed(p.clone(), order, &cuts, timing)?
             } else {
                 CornerBlend::try_with(p.clone(), order, &cuts, timing)?
             };
-            let knots = curve.knots().to_vec();
+            knots = curve.knots().to_vec();
             Built::new(curve, p)
-                .with_info("knots", json!(knots))
-                .with_order(order)
-        })),
-    }
+        }),
+    };
+    Ok(built.with_info("knots", json!(knots)).with_order(order))
 }
