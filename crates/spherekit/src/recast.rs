@@ -60,7 +60,26 @@ impl<Q: Manifold> Recast<Q> {
 pub(crate) mod keys {
     use glam::{DQuat, DVec3, DVec4};
 
+    use core::fmt::Debug;
+
     use crate::{S2Point, UnitQuat};
+
+    /// `1` if `native` is a built curve, after asserting that the construction on S^m gave the
+    /// same curve or error, bit for bit (`{:?}` prints each `f64` in the shortest form that reads
+    /// back to the same bits); `context` is printed when they differ.
+    pub(crate) fn same_bits<T: Debug, E: Debug>(
+        native: &Result<T, E>,
+        on_sn: &Result<T, E>,
+        context: &dyn Debug,
+    ) -> usize {
+        assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{context:?}");
+        usize::from(native.is_ok())
+    }
+
+    /// The curves built by a test's `check` over every key set of [`on_s2`] and [`on_s3`].
+    pub(crate) fn built(s2: fn(&[S2Point]) -> usize, s3: fn(&[UnitQuat]) -> usize) -> usize {
+        on_s2().iter().map(|p| s2(p)).sum::<usize>() + on_s3().iter().map(|p| s3(p)).sum::<usize>()
+    }
 
     fn s2(v: [f64; 3]) -> S2Point {
         S2Point::try_new(DVec3::from_array(v)).unwrap_or_else(|e| panic!("{e}"))
