@@ -495,23 +495,9 @@ impl<P: Manifold> CubicSpline<P> {
             }
             v
         };
-        let mut span = vec![0.0; r];
-        let mut velocities = Vec::with_capacity(n);
-        for k in 0..n {
-            frames.combine(k, &x[k * m..(k + 1) * m], &mut span);
-            velocities.push(ambient(&span));
-        }
+        let (velocities, ends) = frames.velocities(&geo, &x, ambient);
         let mut segments = Vec::with_capacity(nseg);
-        let mut u = vec![0.0; m];
-        for i in 0..nseg {
-            let j = (i + 1) % n;
-            if m > 0 {
-                geo.to_segment_end(i, &x[j * m..(j + 1) * m], &mut u);
-                let sc = &geo.seg[i];
-                apply_s(&geo.ehat[i * m..(i + 1) * m], sc.inv_sinc, &mut u);
-            }
-            frames.combine(i, &u, &mut span);
-            let big_u = ambient(&span);
+        for (i, big_u) in ends.into_iter().enumerate() {
             let h = geo.seg[i].h;
             let (v0, l) = (velocities[i].clone(), dirs[i].clone() * thetas[i]);
             segments.push(Segment {
@@ -937,12 +923,12 @@ impl Frames {
                 id - scale * uj
             }));
         }
-        let mut ehat = Vec::with_capacity((count - 1) * m);
+        data.resize(count * m * r, 0.0);
+        let mut ehat = vec![0.0; (count - 1) * m];
         let mut e_end = vec![0.0; r];
-        let mut g = vec![0.0; r];
         for k in 0..count - 1 {
             let (x, e) = (&xs[k * r..(k + 1) * r], &es[k * r..(k + 1) * r]);
-            let next = ((k + 1) % n) * r;
+            let next = if k + 1 == n { 0 } else { (k + 1) * r };
             let y = &xs[next..next + r];
             let (sn, cs) = sin_cos[k];
             for ((o, xj), ej) in e_end.iter_mut().zip(x).zip(e) {
@@ -950,18 +936,18 @@ impl Frames {
             }
             // Frame k + 1: each vector of frame k with its component along e rotated into e′
             // (the parallel transport), then orthogonalised against the next key.
-            for a in 0..m {
-                let f = &data[(k * m + a) * r..(k * m + a + 1) * r];
-                let fe = dot(f, e);
-                ehat.push(fe);
+            let (done, rest) = data.split_at_mut((k + 1) * m * r);
+            let frame = done[k * m * r..].chunks_exact(r);
+            let ehat = &mut ehat[k * m..(k + 1) * m];
+            for ((f, g), fe) in frame.zip(rest.chunks_exact_mut(r)).zip(ehat) {
+                *fe = dot(f, e);
                 for ((gj, fj), dj) in g.iter_mut().zip(f).zip(&e_end) {
-                    *gj = fj + fe * dj;
+                    *gj = fj + *fe * dj;
                 }
-                let gy = dot(&g, y);
+                let gy = dot(g, y);
                 for (gj, yj) in g.iter_mut().zip(y) {
                     *gj -= gy * yj;
                 }
-                data.extend_from_slice(&g);
             }
         }
         (Self { r, data }, ehat)
@@ -974,11 +960,43 @@ impl Frames {
         &self.data[(k * m + a) * self.r..(k * m + a + 1) * self.r]
     }
 
-    /// `out = Σₐ cₐ·(frame k)ₐ`.
-    fn combine(&self, k: usize, c: &[f64], out: &mut [f64]) {
-        with_dim!(self.r, |d| self.combine_in(d, k, c, out));
+    /// The key velocities `Vₖ` and the segments' end velocities `Uᵢ = Nᵢ Vᵢ₊₁`, from the
+    /// solution `x` in frame coordinates, each made an ambient vector by `ambient` from its span
+    /// coordinates.
+    fn velocities<V>(&self, geo: &Geometry, x: &[f64], ambient: impl Fn(&[f64]) -> V) -> (Vec<V>, Vec<V>) {
+        with_dim!(self.r, |d| self.velocities_in(d, geo, x, &ambient))
     }
 
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+    fn velocities_in<D: Dim, V>(
+        &self,
+        d: D,
+        geo: &Geometry,
+        x: &[f64],
+        ambient: impl Fn(&[f64]) -> V,
+    ) -> (Vec<V>, Vec<V>) {
+        let r = d.get();
+        let m = r - 1;
+        let nseg = geo.seg.len();
+        let mut span = vec![0.0; r];
+        let mut keys = Vec::with_capacity(geo.n);
+        for k in 0..geo.n {
+            self.combine_in(d, k, &x[k * m..(k + 1) * m], &mut span);
+            keys.push(ambient(&span));
+        }
+        let mut ends = Vec::with_capacity(nseg);
+        let mut u = vec![0.0; m];
+        for i in 0..nseg {
+            let j = if i + 1 == geo.n { 0 } else { i + 1 };
+            geo.to_segment_end(i, &x[j * m..(j + 1) * m], &mut u);
+            apply_s(geo.ehat(i), geo.seg[i].inv_sinc, &mut u);
+            self.combine_in(d, i, &u, &mut span);
+            ends.push(ambient(&span));
+        }
+        (keys, ends)
+    }
+
+    /// `out = Σₐ cₐ·(frame k)ₐ`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn combine_in<D: Dim>(&self, d: D, k: usize, c: &[f64], out: &mut [f64]) {
         let r = d.get();
