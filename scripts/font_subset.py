@@ -12,14 +12,18 @@ Needs fontTools (`pip install fonttools` into a venv) and Debian's fonts-dejavu-
 - crates/spherekit-render/fonts/glyphs.bin: the same outlines in the renderer's format, which
   the renderer embeds (so that it needs no font parser):
 
-      "SKF2", u16 units per em, i16 ascender, i16 descender, u16 glyph count,
-      count × (u32 code point, u16 advance, u32 offset, u16 length), sorted by code point
-      (little-endian), then each glyph's outline: a varint contour count, and per contour a
-      varint piece count, its start point and its pieces (a line: its end point; a quadratic:
-      its control point, then its end point). Points are in units of QUANTUM font units (y up),
-      each coordinate the zigzag varint (LEB128) of its difference from the previous
-      coordinate of the same axis, carried across contours; the x of a piece's first point is
-      shifted left by one with the low bit set for a quadratic.
+      "SKF3", u16 units per em, i16 ascender, i16 descender, u16 glyph count,
+      count × (u24 code point, u16 advance, u16 offset), sorted by code point (little-endian;
+      a glyph's data runs to the next glyph's offset, the last one's to the end), then each
+      glyph's data. It starts with a varint `h`. A simple glyph (`h` even) has `h / 2`
+      contours, each a varint piece count, its start point and its pieces (a line: its end
+      point; a quadratic: its control point, then its end point). Points are in units of
+      QUANTUM font units (y up), each coordinate the zigzag varint (LEB128) of its difference
+      from the previous coordinate of the same axis, carried across contours; the x of a
+      piece's first point is shifted left by one with the low bit set for a quadratic. A
+      composite glyph (`h` odd, the accented letters) is `h / 2` components, each the varint
+      index of a glyph in the table and its offset (zigzag varints, font units). Glyphs that
+      only serve as components (the accents) come last, with code points above U+10FFFF.
 """
 import struct
 import sys
@@ -81,6 +85,17 @@ def zigzag(d):
     return (d << 1) if d >= 0 else ((-d << 1) - 1)
 
 
+def encode_composite(components):
+    """A composite glyph: [(glyph index, dx, dy)] in font units."""
+    out = bytearray()
+    varint(out, (len(components) << 1) | 1)
+    for index, dx, dy in components:
+        varint(out, index)
+        varint(out, zigzag(dx))
+        varint(out, zigzag(dy))
+    return out
+
+
 def encode(contours):
     out = bytearray()
     last = [0, 0]
@@ -94,7 +109,7 @@ def encode(contours):
         varint(out, zy)
         last[:] = q
 
-    varint(out, len(contours))
+    varint(out, len(contours) << 1)
     for start, pieces in contours:
         varint(out, len(pieces))
         point(start)
@@ -124,21 +139,48 @@ def main():
     font = TTFont(str(OUT / "DejaVuSans-subset.ttf"))
     cmap = font.getBestCmap()
     glyphset = font.getGlyphSet()
+    glyf = font["glyf"]
     hmtx = font["hmtx"]
+    # The glyphs by code point, then the components that have none (code points 0x110000 + i).
+    names = [(cp, cmap[cp]) for cp in sorted(cmap)]
+    extra = []
+
+    def components_of(name):
+        for comp in glyf[name].components:
+            if comp.transform if hasattr(comp, "transform") else False:
+                raise SystemExit(f"{name}: a scaled component is not supported")
+            yield comp.glyphName
+            if glyf[comp.glyphName].isComposite():
+                yield from components_of(comp.glyphName)
+
+    for _, name in names:
+        if glyf[name].isComposite():
+            for comp in components_of(name):
+                if comp not in cmap.values() and comp not in extra:
+                    extra.append(comp)
+    names += [(0x110000 + i, name) for i, name in enumerate(extra)]
+    index = {}
+    for i, (_, name) in enumerate(names):
+        index.setdefault(name, i)
     entries, stream = [], bytearray()
-    for cp in sorted(cmap):
-        name = cmap[cp]
-        pen = Recorder(glyphset)
-        glyphset[name].draw(pen)
-        data = encode(pen.contours)
-        entries.append((cp, hmtx[name][0], len(stream), len(data)))
+    for cp, name in names:
+        g = glyf[name]
+        if g.isComposite():
+            data = encode_composite([(index[c.glyphName], c.x, c.y) for c in g.components])
+        else:
+            pen = Recorder(glyphset)
+            glyphset[name].draw(pen)
+            data = encode(pen.contours)
+        entries.append((cp, hmtx[name][0], len(stream)))
         stream += data
+    if len(stream) > 0xFFFF:
+        raise SystemExit("the outlines no longer fit 16-bit offsets")
     head = font["head"]
     hhea = font["hhea"]
-    blob = bytearray(b"SKF2")
+    blob = bytearray(b"SKF3")
     blob += struct.pack("<HhhH", head.unitsPerEm, hhea.ascent, hhea.descent, len(entries))
-    for cp, adv, off, n in entries:
-        blob += struct.pack("<IHIH", cp, adv, off, n)
+    for cp, adv, off in entries:
+        blob += struct.pack("<I", cp)[:3] + struct.pack("<HH", adv, off)
     blob += stream
     (OUT / "glyphs.bin").write_bytes(bytes(blob))
     missing = [c for c in CHARS if ord(c) not in cmap]

@@ -21,14 +21,10 @@ use std::rc::Rc;
 static GLYPHS: &[u8] = include_bytes!("../fonts/glyphs.bin");
 
 const HEADER: usize = 12;
-const ENTRY: usize = 12;
+const ENTRY: usize = 7;
 
 fn u16_at(b: &[u8], i: usize) -> u16 {
     u16::from_le_bytes([b[i], b[i + 1]])
-}
-
-fn u32_at(b: &[u8], i: usize) -> u32 {
-    u32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]])
 }
 
 /// The font's units per em.
@@ -53,25 +49,40 @@ fn glyph(c: char) -> Glyph {
     })
 }
 
+fn count() -> usize {
+    usize::from(u16_at(GLYPHS, 10))
+}
+
+/// The glyph at `index` of the table (`None` past its end).
+fn entry(index: usize) -> Option<Glyph> {
+    let n = count();
+    if index >= n {
+        return None;
+    }
+    let stream = HEADER + n * ENTRY;
+    let e = HEADER + index * ENTRY;
+    let off = stream + usize::from(u16_at(GLYPHS, e + 5));
+    let end = if index + 1 < n {
+        stream + usize::from(u16_at(GLYPHS, e + ENTRY + 5))
+    } else {
+        GLYPHS.len()
+    };
+    Some(Glyph {
+        advance: u16_at(GLYPHS, e + 3),
+        commands: GLYPHS.get(off..end)?,
+    })
+}
+
 fn lookup(c: char) -> Option<Glyph> {
-    let count = usize::from(u16_at(GLYPHS, 10));
-    let stream = HEADER + count * ENTRY;
-    let (mut lo, mut hi) = (0, count);
+    let (mut lo, mut hi) = (0, count());
     while lo < hi {
         let mid = (lo + hi) / 2;
         let e = HEADER + mid * ENTRY;
-        let cp = u32_at(GLYPHS, e);
+        let cp = u32::from_le_bytes([GLYPHS[e], GLYPHS[e + 1], GLYPHS[e + 2], 0]);
         match cp.cmp(&u32::from(c)) {
             core::cmp::Ordering::Less => lo = mid + 1,
             core::cmp::Ordering::Greater => hi = mid,
-            core::cmp::Ordering::Equal => {
-                let off = stream + u32_at(GLYPHS, e + 6) as usize;
-                let len = usize::from(u16_at(GLYPHS, e + 10));
-                return Some(Glyph {
-                    advance: u16_at(GLYPHS, e + 4),
-                    commands: GLYPHS.get(off..off + len)?,
-                });
-            }
+            core::cmp::Ordering::Equal => return entry(mid),
         }
     }
     None
@@ -133,9 +144,39 @@ fn unzigzag(z: u32) -> i32 {
 /// The outline of `c` at `px` pixels per em in pixel coordinates (y down), the origin at
 /// `(dx, 0)`, as closed polylines.
 fn outline(c: char, px: f32, dx: f32) -> Vec<Vec<(f32, f32)>> {
-    let b = glyph(c).commands;
-    let k = QUANTUM * px / units_per_em();
+    let mut out = Vec::new();
+    outline_into(glyph(c).commands, px, (dx, 0.0), 0, &mut out);
+    out
+}
+
+/// The contours of the glyph data `b` with its origin at `origin` (pixels), appended to
+/// `out`; a composite glyph's components at their offsets (nested at most a few deep, as the
+/// accents of the subset are).
+fn outline_into(
+    b: &[u8],
+    px: f32,
+    origin: (f32, f32),
+    depth: usize,
+    out: &mut Vec<Vec<(f32, f32)>>,
+) {
     let mut i = 0;
+    let head = varint(b, &mut i);
+    if head & 1 == 1 {
+        let s = px / units_per_em();
+        for _ in 0..head >> 1 {
+            let index = varint(b, &mut i) as usize;
+            let ox = unzigzag(varint(b, &mut i));
+            let oy = unzigzag(varint(b, &mut i));
+            if let Some(g) = entry(index).filter(|_| depth < 4) {
+                #[expect(clippy::cast_precision_loss, reason = "small font coordinates")]
+                let at = (origin.0 + ox as f32 * s, origin.1 - oy as f32 * s);
+                outline_into(g.commands, px, at, depth + 1, out);
+            }
+        }
+        return;
+    }
+    let k = QUANTUM * px / units_per_em();
+    let (dx, dy) = origin;
     let mut last = [0_i32; 2];
     // The next point; with `flagged`, also whether the piece it starts is a quadratic.
     let mut point = |i: &mut usize, flagged: bool| {
@@ -148,12 +189,12 @@ fn outline(c: char, px: f32, dx: f32) -> Vec<Vec<(f32, f32)>> {
         last[0] += unzigzag(zx);
         last[1] += unzigzag(varint(b, i));
         #[expect(clippy::cast_precision_loss, reason = "small font coordinates")]
-        let p = (dx + last[0] as f32 * k, -(last[1] as f32) * k);
+        let y = -(last[1] as f32) * k;
+        // (A component's offset only where it has one: −0 stays −0 at the top level.)
+        let p = (dx + last[0] as f32 * k, if dy == 0.0 { y } else { y + dy });
         (p, quad)
     };
-    let contours = varint(b, &mut i);
-    let mut out = Vec::new();
-    for _ in 0..contours {
+    for _ in 0..head >> 1 {
         let pieces = varint(b, &mut i);
         let (start, _) = point(&mut i, false);
         let mut contour = vec![start];
@@ -169,7 +210,6 @@ fn outline(c: char, px: f32, dx: f32) -> Vec<Vec<(f32, f32)>> {
         }
         out.push(contour);
     }
-    out
 }
 
 /// Appends the quadratic from `p0` through control `p1` to `p2` as lines (enough that they
@@ -377,6 +417,38 @@ pub(crate) fn layout(s: &str, px: f32, x: f32) -> Vec<(char, i32, u8)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Most accented letters are stored as their base letter and an accent at an offset: their
+    /// outline is the base's contours, unmoved, and the accent's above (or below) them.
+    #[test]
+    fn accented_letters_are_the_base_letter_and_an_accent() {
+        let top =
+            |cs: &[Vec<(f32, f32)>]| cs.iter().flatten().map(|p| p.1).fold(f32::MAX, f32::min);
+        let bottom =
+            |cs: &[Vec<(f32, f32)>]| cs.iter().flatten().map(|p| p.1).fold(f32::MIN, f32::max);
+        for (accented, base, above) in [('é', 'e', true), ('Ä', 'A', true), ('ç', 'c', false)] {
+            let (a, b) = (outline(accented, 40.0, 1.25), outline(base, 40.0, 1.25));
+            assert!(a.len() > b.len(), "{accented:?}: {} contours", a.len());
+            assert_eq!(
+                a[..b.len()],
+                b[..],
+                "{accented:?}: the base letter first, unmoved"
+            );
+            if above {
+                assert!(
+                    top(&a) < top(&b) - 2.0,
+                    "{accented:?}: the accent above the letter"
+                );
+            } else {
+                assert!(
+                    bottom(&a) > bottom(&b) + 2.0,
+                    "{accented:?}: the cedilla below"
+                );
+            }
+        }
+        // The accents alone are not characters.
+        assert_eq!(outline('\u{301}', 40.0, 0.0), outline('?', 40.0, 0.0));
+    }
 
     #[test]
     fn the_subset_has_the_characters_the_figures_use() {

@@ -963,7 +963,12 @@ impl Frames {
     /// The key velocities `Vₖ` and the segments' end velocities `Uᵢ = Nᵢ Vᵢ₊₁`, from the
     /// solution `x` in frame coordinates, each made an ambient vector by `ambient` from its span
     /// coordinates.
-    fn velocities<V>(&self, geo: &Geometry, x: &[f64], ambient: impl Fn(&[f64]) -> V) -> (Vec<V>, Vec<V>) {
+    fn velocities<V>(
+        &self,
+        geo: &Geometry,
+        x: &[f64],
+        ambient: impl Fn(&[f64]) -> V,
+    ) -> (Vec<V>, Vec<V>) {
         with_dim!(self.r, |d| self.velocities_in(d, geo, x, &ambient))
     }
 
