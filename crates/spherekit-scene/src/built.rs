@@ -261,6 +261,7 @@ pub enum BuiltCurve {
 /// Builds the same expression on every sphere: `on_every_sphere!(points, |p| expr)` matches
 /// [`Points`](crate::scene::Points) and wraps `expr` (a [`Built`]) in the [`BuiltCurve`] of
 /// the same sphere, so a method's build function is written once for S², S³ and S^m.
+#[cfg(not(any(test, target_arch = "wasm32")))]
 macro_rules! on_every_sphere {
     ($points:expr, |$p:ident| $body:expr) => {
         match $points {
@@ -269,6 +270,34 @@ macro_rules! on_every_sphere {
             $crate::scene::Points::Sn($p) => $crate::built::BuiltCurve::Sn($body),
         }
     };
+}
+/// The unit tests' `on_every_sphere!`: the native one, or the wasm build's while
+/// [`on_sn::ROUTE`] is set (`on_sn::tests` compares the two).
+#[cfg(all(test, not(target_arch = "wasm32")))]
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        if $crate::built::on_sn::ROUTE.get() {
+            let ($p, back) = $crate::built::on_sn::to_sn($points);
+            let built: $crate::built::Built<spherekit::SnPoint> = $body;
+            back.wrap(built)
+        } else {
+            match $points {
+                $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
+                $crate::scene::Points::S3($p) => $crate::built::BuiltCurve::S3($body),
+                $crate::scene::Points::Sn($p) => $crate::built::BuiltCurve::Sn($body),
+            }
+        }
+    };
+}
+/// The wasm build's `on_every_sphere!`: `expr` once, on S^m ([`on_sn`]), the curve of an S² or
+/// S³ scene wrapped back onto its sphere.
+#[cfg(target_arch = "wasm32")]
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {{
+        let ($p, back) = $crate::built::on_sn::to_sn($points);
+        let built: $crate::built::Built<spherekit::SnPoint> = $body;
+        back.wrap(built)
+    }};
 }
 pub(crate) use on_every_sphere;
 
@@ -443,5 +472,193 @@ impl ScenePoint for SnPoint {
     }
     fn vector_from_coords(c: &[f64]) -> Option<VecN> {
         Some(VecN::from(c.to_vec()))
+    }
+}
+
+/// The every-sphere methods built and evaluated once, on S^m, in the wasm build.
+///
+/// Each method written with [`on_every_sphere!`] would otherwise be compiled three times into
+/// the .wasm (for [`S2Point`], [`UnitQuat`] and [`SnPoint`]), its construction and its
+/// evaluation. The browser build converts the keys of an S² or S³ scene to points of S^m with
+/// the same ambient coordinates, builds there, and wraps the curve ([`OnSn`]) so that the rest of
+/// the code still sees a curve on S² or S³. Every [`Manifold`] operation is a default method over
+/// [`spherekit::Ambient`], whose implementations do the same arithmetic coordinate by
+/// coordinate for `DVec3`, `DVec4` and [`VecN`], so the curve and its samples have the same bits
+/// as the native build's (`tests::curves_on_s_m_have_the_same_bits`, and the browser's renders
+/// are compared with the native ones byte for byte by the end-to-end tests). The cost is in
+/// evaluation: a point of S^m allocates its coordinates.
+#[cfg(any(test, target_arch = "wasm32"))]
+pub(crate) mod on_sn {
+    use spherekit::glam::{DVec3, DVec4};
+    use spherekit::{Ambient, Curve, Jet, Manifold, Side, SnPoint, VecN};
+
+    use super::{Built, BuiltCurve, ScenePoint};
+    use crate::scene::Points;
+
+    /// The sphere a curve built on S^m goes back to.
+    pub(crate) enum Back {
+        S2,
+        S3,
+        Sn,
+    }
+
+    /// A point of S^m with the ambient coordinates of `p`.
+    pub(crate) fn point<P: Manifold>(p: &P) -> SnPoint {
+        SnPoint::from_vector_unchecked(VecN::from(p.to_vector().as_slice().to_vec()))
+    }
+
+    /// The scene's points as points of S^m, and the sphere to go back to.
+    pub(crate) fn to_sn(points: Points) -> (Vec<SnPoint>, Back) {
+        match points {
+            Points::S2(p) => (p.iter().map(point).collect(), Back::S2),
+            Points::S3(p) => (p.iter().map(point).collect(), Back::S3),
+            Points::Sn(p) => (p, Back::Sn),
+        }
+    }
+
+    impl Back {
+        /// `built` on the sphere of the scene.
+        pub(crate) fn wrap(self, built: Built<SnPoint>) -> BuiltCurve {
+            match self {
+                Self::S2 => BuiltCurve::S2(recast(built, DVec3::ZERO)),
+                Self::S3 => BuiltCurve::S3(recast(built, DVec4::ZERO)),
+                Self::Sn => BuiltCurve::Sn(built),
+            }
+        }
+    }
+
+    /// `built` as a curve of the point type whose ambient vectors are like `like`.
+    pub(crate) fn recast<Q: ScenePoint>(built: Built<SnPoint>, like: Q::Vector) -> Built<Q> {
+        let to = OnSn::<Q> {
+            curve: built.curve,
+            like,
+        };
+        let points = |ps: Vec<SnPoint>| ps.iter().map(|p| to.point(p)).collect();
+        Built {
+            inputs: points(built.inputs),
+            controls: points(built.controls),
+            auxiliary: points(built.auxiliary),
+            info: built.info,
+            order: built.order,
+            curve: Box::new(to),
+        }
+    }
+
+    /// A curve on S^m seen as a curve of `Q` (S² or S³), its points and vectors converted
+    /// coordinate by coordinate.
+    #[derive(Debug)]
+    pub(crate) struct OnSn<Q: Manifold> {
+        curve: Box<dyn Curve<Point = SnPoint> + Send + Sync>,
+        like: Q::Vector,
+    }
+
+    impl<Q: Manifold> OnSn<Q> {
+        fn vector(&self, v: &VecN) -> Q::Vector {
+            self.like.with_coords(v.as_slice())
+        }
+
+        fn point(&self, p: &SnPoint) -> Q {
+            Q::from_vector_unchecked(self.like.with_coords(p.coords()))
+        }
+
+        fn jet(&self, j: &Jet<SnPoint>) -> Jet<Q> {
+            Jet {
+                point: self.point(&j.point),
+                velocity: self.vector(&j.velocity),
+                acceleration: self.vector(&j.acceleration),
+            }
+        }
+    }
+
+    impl<Q: Manifold> Curve for OnSn<Q> {
+        type Point = Q;
+
+        fn domain(&self) -> [f64; 2] {
+            self.curve.domain()
+        }
+
+        fn joints(&self) -> &[f64] {
+            self.curve.joints()
+        }
+
+        fn is_closed(&self) -> bool {
+            self.curve.is_closed()
+        }
+
+        fn jet_at(&self, t: f64, side: Side) -> Jet<Q> {
+            self.jet(&self.curve.jet_at(t, side))
+        }
+
+        fn jet(&self, t: f64) -> Jet<Q> {
+            self.jet(&self.curve.jet(t))
+        }
+
+        fn eval(&self, t: f64) -> Q {
+            self.point(&self.curve.eval(t))
+        }
+
+        fn eval_many(&self, ts: &[f64], out: &mut [Q]) {
+            let mut ps = vec![self.curve.eval(self.curve.domain()[0]); out.len()];
+            self.curve.eval_many(ts, &mut ps);
+            for (o, p) in out.iter_mut().zip(&ps) {
+                *o = self.point(p);
+            }
+        }
+
+        fn jet_many(&self, ts: &[f64], out: &mut [Jet<Q>]) {
+            let mut js = vec![self.curve.jet(self.curve.domain()[0]); out.len()];
+            self.curve.jet_many(ts, &mut js);
+            for (o, j) in out.iter_mut().zip(&js) {
+                *o = self.jet(j);
+            }
+        }
+    }
+
+    #[cfg(test)]
+    std::thread_local! {
+        /// Whether the unit tests' `on_every_sphere!` builds on S^m, as the wasm build does.
+        pub(crate) static ROUTE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    }
+
+    #[cfg(test)]
+    mod tests {
+        use std::path::Path;
+
+        use crate::scene::{SampleOptions, Scene};
+
+        use super::ROUTE;
+
+        /// Every golden scene (every method, S² and S³, open and closed, with parameters)
+        /// sampled with derivatives and the continuity report: the same JSON (`f64`s printed in
+        /// the shortest form that reads back to the same bits) built natively and on S^m.
+        #[test]
+        fn curves_on_s_m_have_the_same_bits() {
+            let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/golden");
+            let mut compared = 0;
+            for entry in std::fs::read_dir(&dir).expect("tests/golden") {
+                let path = entry.expect("entry").path();
+                if path.extension().is_none_or(|e| e != "json") {
+                    continue;
+                }
+                let text = std::fs::read_to_string(&path).expect("scene");
+                let scene = Scene::from_json(&text).expect("a golden scene");
+                let options = SampleOptions {
+                    deriv: true,
+                    continuity: true,
+                    body_frame: false,
+                };
+                let sample = |on_sn: bool| {
+                    ROUTE.set(on_sn);
+                    let curves = scene.build();
+                    ROUTE.set(false);
+                    curves
+                        .map(|c| scene.sample_json_with(&c, options).to_string())
+                        .map_err(|e| e.to_string())
+                };
+                assert_eq!(sample(false), sample(true), "{}", path.display());
+                compared += 1;
+            }
+            assert!(compared >= 40, "{compared} golden scenes");
+        }
     }
 }

@@ -5,7 +5,7 @@
 
 use serde_json::json;
 use spherekit::glam::DVec3;
-use spherekit::{CubicEnd, CubicSpline, SplineError, UnitQuat};
+use spherekit::{Ambient, CubicEnd, CubicSpline, SplineError, UnitQuat};
 
 use crate::built::{Built, BuiltCurve, ScenePoint, on_every_sphere};
 use crate::error::{SceneError, field_error};
@@ -158,13 +158,20 @@ fn build_curve(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     }))
 }
 
-/// [`tangent`] for the point type of `_points`.
-fn tangent_of<P: ScenePoint>(
-    _points: &[P],
-    name: &str,
-    v: &[f64],
-) -> Result<P::Vector, SceneError> {
-    tangent::<P>(name, v)
+/// [`tangent`] for the point type and the dimension of `points` (so that a wrong count is
+/// the same error on S^m as on S² and S³, where the wasm build also builds on S^m).
+fn tangent_of<P: ScenePoint>(points: &[P], name: &str, v: &[f64]) -> Result<P::Vector, SceneError> {
+    let dim = points.first().map_or(0, |p| p.to_vector().dim());
+    tangent::<P>(name, v).and_then(|t| {
+        if t.dim() == dim {
+            Ok(t)
+        } else {
+            Err(field_error(
+                format!("params.{name}"),
+                format!("has {} numbers, not a vector of this sphere", v.len()),
+            ))
+        }
+    })
 }
 
 fn finish<P: ScenePoint>(curve: CubicSpline<P>, points: Vec<P>) -> Built<P> {
