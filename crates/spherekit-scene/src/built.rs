@@ -260,9 +260,36 @@ pub enum BuiltCurve {
 
 /// Builds the same expression on every sphere: `on_every_sphere!(points, |p| expr)` matches
 /// [`Points`](crate::scene::Points) and wraps `expr` (a [`Built`]) in the [`BuiltCurve`] of
-/// the same sphere, so a method's build function is written once for S², S³ and S^m.
+/// the same sphere, so a method's build function is written once for S², S³ and S^m. Natively
+/// `expr` is compiled for each sphere (`on_each_sphere!`); the wasm build compiles it once,
+/// for S^m (`on_s_m!`, `on_sn`); the unit tests have both, `on_sn::ROUTE` choosing
+/// (`on_sn::tests` compares them).
 #[cfg(not(any(test, target_arch = "wasm32")))]
 macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        $crate::built::on_each_sphere!($points, |$p| $body)
+    };
+}
+#[cfg(target_arch = "wasm32")]
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        $crate::built::on_s_m!($points, |$p| $body)
+    };
+}
+#[cfg(all(test, not(target_arch = "wasm32")))]
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        if $crate::built::on_sn::ROUTE.get() {
+            $crate::built::on_s_m!($points, |$p| $body)
+        } else {
+            $crate::built::on_each_sphere!($points, |$p| $body)
+        }
+    };
+}
+
+/// `on_every_sphere!` with `expr` compiled for each sphere.
+#[cfg(not(target_arch = "wasm32"))]
+macro_rules! on_each_sphere {
     ($points:expr, |$p:ident| $body:expr) => {
         match $points {
             $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
@@ -271,28 +298,13 @@ macro_rules! on_every_sphere {
         }
     };
 }
-/// The unit tests' `on_every_sphere!`: the native one, or the wasm build's while
-/// [`on_sn::ROUTE`] is set (`on_sn::tests` compares the two).
-#[cfg(all(test, not(target_arch = "wasm32")))]
-macro_rules! on_every_sphere {
-    ($points:expr, |$p:ident| $body:expr) => {
-        if $crate::built::on_sn::ROUTE.get() {
-            let ($p, back) = $crate::built::on_sn::to_sn($points);
-            let built: $crate::built::Built<spherekit::SnPoint> = $body;
-            back.wrap(built)
-        } else {
-            match $points {
-                $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
-                $crate::scene::Points::S3($p) => $crate::built::BuiltCurve::S3($body),
-                $crate::scene::Points::Sn($p) => $crate::built::BuiltCurve::Sn($body),
-            }
-        }
-    };
-}
-/// The wasm build's `on_every_sphere!`: `expr` once, on S^m ([`on_sn`]), the curve of an S² or
-/// S³ scene wrapped back onto its sphere.
-#[cfg(target_arch = "wasm32")]
-macro_rules! on_every_sphere {
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) use on_each_sphere;
+
+/// `on_every_sphere!` with `expr` compiled once, on S^m, the curve of an S² or S³ scene
+/// wrapped back onto its sphere (`on_sn`).
+#[cfg(any(test, target_arch = "wasm32"))]
+macro_rules! on_s_m {
     ($points:expr, |$p:ident| $body:expr) => {{
         let ($p, back) = $crate::built::on_sn::to_sn($points);
         let built: $crate::built::Built<spherekit::SnPoint> = $body;
@@ -300,6 +312,8 @@ macro_rules! on_every_sphere {
     }};
 }
 pub(crate) use on_every_sphere;
+#[cfg(any(test, target_arch = "wasm32"))]
+pub(crate) use on_s_m;
 
 /// The fields [`BuiltCurve::sample_field`] gives, as [`Scene::sample_json`] names them.
 pub const SAMPLE_FIELDS: [&str; 9] = [
