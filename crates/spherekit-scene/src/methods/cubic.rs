@@ -73,14 +73,19 @@ fn angular(name: &str, v: &[f64]) -> Result<DVec3, SceneError> {
     }
 }
 
-/// A tangent vector in scene coordinates.
-fn tangent<P: ScenePoint>(name: &str, v: &[f64]) -> Result<P::Vector, SceneError> {
-    P::vector_from_coords(v).ok_or_else(|| {
-        field_error(
-            format!("params.{name}"),
-            format!("has {} numbers, not a vector of this sphere", v.len()),
-        )
-    })
+/// A tangent vector in scene coordinates, of the dimension of `points` (checked here, so that a
+/// wrong count is the same error on S^m as on S² and S³, where the wasm build also builds on
+/// S^m).
+fn tangent_of<P: ScenePoint>(points: &[P], name: &str, v: &[f64]) -> Result<P::Vector, SceneError> {
+    let dim = points.first().map_or(0, |p| p.to_vector().dim());
+    P::vector_from_coords(v)
+        .filter(|t| t.dim() == dim)
+        .ok_or_else(|| {
+            field_error(
+                format!("params.{name}"),
+                format!("has {} numbers, not a vector of this sphere", v.len()),
+            )
+        })
 }
 
 fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
@@ -156,22 +161,6 @@ fn build_curve(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         };
         finish(CubicSpline::try_new(p.clone(), knots, end, closed)?, p)
     }))
-}
-
-/// [`tangent`] for the point type and the dimension of `points` (so that a wrong count is
-/// the same error on S^m as on S² and S³, where the wasm build also builds on S^m).
-fn tangent_of<P: ScenePoint>(points: &[P], name: &str, v: &[f64]) -> Result<P::Vector, SceneError> {
-    let dim = points.first().map_or(0, |p| p.to_vector().dim());
-    tangent::<P>(name, v).and_then(|t| {
-        if t.dim() == dim {
-            Ok(t)
-        } else {
-            Err(field_error(
-                format!("params.{name}"),
-                format!("has {} numbers, not a vector of this sphere", v.len()),
-            ))
-        }
-    })
 }
 
 fn finish<P: ScenePoint>(curve: CubicSpline<P>, points: Vec<P>) -> Built<P> {
