@@ -483,7 +483,7 @@ impl<P: Manifold> CubicSpline<P> {
             }?
         };
 
-        // Back to ambient vectors: key velocities Vₖ and end velocities Uᵢ = Nᵢ Vᵢ₊₁.
+        // Back to ambient vectors: the key velocities Vₖ and the segments' coefficients.
         let zero = vectors[0].zeros_like();
         let ambient = |span: &[f64]| {
             if whole {
@@ -495,19 +495,7 @@ impl<P: Manifold> CubicSpline<P> {
             }
             v
         };
-        let (velocities, ends) = frames.velocities(&geo, &x, ambient);
-        let mut segments = Vec::with_capacity(nseg);
-        for (i, big_u) in ends.into_iter().enumerate() {
-            let h = geo.seg[i].h;
-            let (v0, l) = (velocities[i].clone(), dirs[i].clone() * thetas[i]);
-            segments.push(Segment {
-                start: vectors[i].clone(),
-                a: v0.clone() * h,
-                b: l.clone() * 3.0 - v0.clone() * (2.0 * h) - big_u.clone() * h,
-                c: l * -2.0 + v0 * h + big_u * h,
-                inv_h: 1.0 / h,
-            });
-        }
+        let (velocities, segments) = frames.output(&geo, &x, &es, &vectors, ambient);
         Ok(Self {
             points,
             knots,
@@ -960,45 +948,71 @@ impl Frames {
         &self.data[(k * m + a) * self.r..(k * m + a + 1) * self.r]
     }
 
-    /// The key velocities `Vₖ` and the segments' end velocities `Uᵢ = Nᵢ Vᵢ₊₁`, from the
-    /// solution `x` in frame coordinates, each made an ambient vector by `ambient` from its span
-    /// coordinates.
-    fn velocities<V>(
+    /// The key velocities `Vₖ` and the segments, from the solution `x` in frame coordinates:
+    /// with the end velocity `Uᵢ = Nᵢ Vᵢ₊₁` and `lᵢ = θᵢ·eᵢ` (`es`: span coordinates of the
+    /// directions), `a = hV`, `b = 3l − 2hV − hU` and `c = −2l + hV + hU`, formed in span
+    /// coordinates and made ambient vectors by `ambient`.
+    fn output<V: Clone>(
         &self,
         geo: &Geometry,
         x: &[f64],
+        es: &[f64],
+        keys: &[V],
         ambient: impl Fn(&[f64]) -> V,
-    ) -> (Vec<V>, Vec<V>) {
-        with_dim!(self.r, |d| self.velocities_in(d, geo, x, &ambient))
+    ) -> (Vec<V>, Vec<Segment<V>>) {
+        with_dim!(self.r, |d| self.output_in(d, geo, x, es, keys, &ambient))
     }
 
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn velocities_in<D: Dim, V>(
+    fn output_in<D: Dim, V: Clone>(
         &self,
         d: D,
         geo: &Geometry,
         x: &[f64],
+        es: &[f64],
+        keys: &[V],
         ambient: impl Fn(&[f64]) -> V,
-    ) -> (Vec<V>, Vec<V>) {
+    ) -> (Vec<V>, Vec<Segment<V>>) {
         let r = d.get();
         let m = r - 1;
         let nseg = geo.seg.len();
-        let mut span = vec![0.0; r];
-        let mut keys = Vec::with_capacity(geo.n);
-        for k in 0..geo.n {
-            self.combine_in(d, k, &x[k * m..(k + 1) * m], &mut span);
-            keys.push(ambient(&span));
-        }
-        let mut ends = Vec::with_capacity(nseg);
+        let mut velocities = Vec::with_capacity(geo.n);
+        let mut segments = Vec::with_capacity(nseg);
+        let (mut v, mut big_u, mut coef) = (vec![0.0; r], vec![0.0; r], vec![0.0; r]);
         let mut u = vec![0.0; m];
-        for i in 0..nseg {
-            let j = if i + 1 == geo.n { 0 } else { i + 1 };
-            geo.to_segment_end(i, &x[j * m..(j + 1) * m], &mut u);
-            apply_s(geo.ehat(i), geo.seg[i].inv_sinc, &mut u);
-            self.combine_in(d, i, &u, &mut span);
-            ends.push(ambient(&span));
+        for k in 0..geo.n {
+            self.combine_in(d, k, &x[k * m..(k + 1) * m], &mut v);
+            velocities.push(ambient(&v));
+            if k == nseg {
+                break;
+            }
+            let j = if k + 1 == geo.n { 0 } else { k + 1 };
+            geo.to_segment_end(k, &x[j * m..(j + 1) * m], &mut u);
+            apply_s(geo.ehat(k), geo.seg[k].inv_sinc, &mut u);
+            self.combine_in(d, k, &u, &mut big_u);
+            let (sc, e) = (&geo.seg[k], &es[k * r..(k + 1) * r]);
+            let (h, theta) = (sc.h, sc.theta);
+            for (o, va) in coef[..r].iter_mut().zip(&v) {
+                *o = va * h;
+            }
+            let a = ambient(&coef);
+            for (o, ((va, ua), ea)) in coef[..r].iter_mut().zip(v.iter().zip(&big_u).zip(e)) {
+                *o = ea * theta * 3.0 - va * (2.0 * h) - ua * h;
+            }
+            let b = ambient(&coef);
+            for (o, ((va, ua), ea)) in coef[..r].iter_mut().zip(v.iter().zip(&big_u).zip(e)) {
+                *o = ea * theta * -2.0 + va * h + ua * h;
+            }
+            let c = ambient(&coef);
+            segments.push(Segment {
+                start: keys[k].clone(),
+                a,
+                b,
+                c,
+                inv_h: 1.0 / h,
+            });
         }
-        (keys, ends)
+        (velocities, segments)
     }
 
     /// `out = Σₐ cₐ·(frame k)ₐ`.

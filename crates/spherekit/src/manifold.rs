@@ -147,6 +147,7 @@ pub(crate) fn geodesic_frame<V: Ambient>(p: &V, q: &V) -> Option<(f64, V)> {
 /// trigonometric call: with `d = |q − p| = 2 sin(θ/2)` and `s = |q + p| = 2 cos(θ/2)`,
 /// `sin θ = 2ds/(d² + s²)` and `cos θ = (s² − d²)/(d² + s²)` (the denominator, 4 for unit
 /// vectors, absorbs their rounding).
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(crate) fn geodesic_frame_sin_cos<V: Ambient>(p: &V, q: &V) -> Option<(f64, V, (f64, f64))> {
     let diff = q.clone() - p.clone();
     let sum = q.clone() + p.clone();
