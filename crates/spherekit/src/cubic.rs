@@ -70,6 +70,12 @@
 //!   pivot of its block LU factorisation is a multiple of `I`: the step is the scalar
 //!   recurrence of the Euclidean spline with `M` and `N` applied as vectors (an open curve; a
 //!   closed one uses the general factorisation);
+//! - (open curves) a second step with the same scalar factorisation corrects for the nonlinear
+//!   term: the linear part is solved at the first iterate, so the residual there is `T(wₖ)`,
+//!   computed and eliminated (from the last row up: the pivots of that direction are scalars
+//!   too) as the linear step's backward substitution yields each `Vₖ`, and substituted a row
+//!   ahead of the next sweep. It takes `V` about 30× closer to the solution, so Newton's first
+//!   factorisation starts nearer and the chord steps converge faster;
 //! - the Jacobian at that point (`DT = 2B(u, ·)` added to the diagonal blocks) is factorised
 //!   once, in O(n) (bordered for the cyclic case), and reused for chord steps while the
 //!   residual falls by 10× per step, refactorised otherwise;
@@ -91,11 +97,18 @@
 //!   the updated residual with the evaluated one on random systems.)
 //!
 //! The iteration stops when the largest row residual, relative to the root sum of squares of
-//! the row's terms (at the last evaluation), is at most 1e-12 (an updated residual: 0.5e-12, as
-//! the terms move with `V` by a few per cent), and reports [`SolveError::NoConvergence`] if it
-//! is not after the iteration limit. For the benchmarks' 1 000 random rotations of 0.4–1.2 rad
-//! at unit spacing it takes the linear step, one Newton step and three chord steps (residuals
-//! 1.4 at `V = 0`, then 1.7e-2, 1.3e-5, 1.5e-8, 1.8e-11, 2.6e-14).
+//! the row's terms, is at most 1e-12, and reports [`SolveError::NoConvergence`] if it is not
+//! after the iteration limit. An updated residual is relative to the terms at the last
+//! evaluation `V̄`; it is turned into a bound at `V`: each row's terms move by at most `Lₖ·ω`
+//! when no unknown has moved by more than `ω ≤ 1` since (`Lₖ` from the row's coefficients:
+//! `4/h` terms, `2/h`, `2/(h·sinc θ)`, and `|B(a, b)| ≤ (|κ| + |sinc′|)|a||b|` for the change of
+//! `T`), and `ω` is at most the largest `|Wₖ|`, so the relative residual at `V` is at most the
+//! updated one over `1 − ω·maxₖ Lₖ/|termsₖ(V̄)|` (a fresh evaluation when that is not
+//! positive). For the benchmarks' 1 000 random rotations of 0.4–1.2 rad at unit spacing it
+//! takes the linear step and its correction, one Newton step and one chord step (residuals
+//! 1.4 at `V = 0`, then 1.3e-8 and 5.4e-13, the last bound 0.4 % above the updated residual);
+//! without the correction it took three chord steps (1.7e-2 at the first factorisation, then
+//! 1.3e-5, 1.5e-8, 1.8e-11, 2.6e-14).
 //!
 //! # Sources
 //!
@@ -129,12 +142,9 @@ use crate::{
     sn::SnPoint,
 };
 
-/// Newton stops once the relative residual is at most this.
+/// Newton stops once the relative residual is at most this (an updated residual of a chord
+/// step, [`FixedSolver::update`]: its bound, [`FixedSolver::bound`]).
 const TARGET_RESIDUAL: f64 = 1e-12;
-/// A chord step's residual is updated rather than evaluated ([`FixedSolver::update`]), relative
-/// to the size of the terms at the last evaluation, which moves with `x` by a few per cent:
-/// the update stops at half the target, so that the evaluated residual meets it.
-const UPDATED_TARGET: f64 = 0.5 * TARGET_RESIDUAL;
 /// The construction fails when the relative residual stays above this.
 const MAX_RESIDUAL: f64 = 1e-12;
 /// Newton and chord steps at most.
@@ -923,18 +933,18 @@ impl Frames {
                 *o = -sn * xj + (cs - 1.0) * ej;
             }
             // Frame k + 1: each vector of frame k with its component along e rotated into e′
-            // (the parallel transport), then orthogonalised against the next key.
+            // (the parallel transport), then orthogonalised against the next key. The dot
+            // products are all taken of frame k (`g·y = f·y + (f·e)(d·y)`), so that the chain
+            // from frame to frame is short.
             let (done, rest) = data.split_at_mut((k + 1) * m * r);
             let frame = done[k * m * r..].chunks_exact(r);
             let ehat = &mut ehat[k * m..(k + 1) * m];
+            let dy = dot(&e_end, y);
             for ((f, g), fe) in frame.zip(rest.chunks_exact_mut(r)).zip(ehat) {
                 *fe = dot(f, e);
-                for ((gj, fj), dj) in g.iter_mut().zip(f).zip(&e_end) {
-                    *gj = fj + *fe * dj;
-                }
-                let gy = dot(g, y);
-                for (gj, yj) in g.iter_mut().zip(y) {
-                    *gj -= gy * yj;
+                let gy = dot(f, y) + *fe * dy;
+                for (((gj, fj), dj), yj) in g.iter_mut().zip(f).zip(&e_end).zip(y) {
+                    *gj = fj + *fe * dj - gy * yj;
                 }
             }
         }
@@ -1922,6 +1932,13 @@ struct FixedSolver<'g, const M: usize> {
     /// nonlinear term at the deviation of `x` from the point `x̄` of the factorisation.
     scale2: Vec<f64>,
     dev: Vec<Vf<M>>,
+    /// From the last evaluation, the largest `Lₖ²/scale2ₖ` and `Qₖ²/scale2ₖ`, where
+    /// `Lₖω + Qₖω²` bounds how much the row's terms can move when no unknown moves by more
+    /// than `ω` (see [`bound`](Self::bound)), and since then the largest `|Wₖ|²`, which bounds
+    /// `ω²`.
+    sens2: f64,
+    quad2: f64,
+    dev2: f64,
     /// Closed: the border column (eliminated in the forward sweep, then `Zₖ`), `A_{n−1}`,
     /// `D_{n−1}`, `C_{n−1}`, the inverse Schur complement of the last unknown.
     border: Vec<Bf<M>>,
@@ -1936,6 +1953,10 @@ struct FixedSolver<'g, const M: usize> {
 struct Row<const M: usize> {
     f: Vf<M>,
     scale2: f64,
+    /// `Lₖ` and `Qₖ`: the row's terms move by at most `Lₖω + Qₖω²` when no unknown moves by
+    /// more than `ω`.
+    lip: f64,
+    quad: f64,
     d: Bf<M>,
 }
 
@@ -1988,6 +2009,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             fac: Vec::with_capacity(n),
             scale2: Vec::with_capacity(n),
             dev: Vec::with_capacity(n),
+            sens2: 0.0,
+            quad2: 0.0,
+            dev2: 0.0,
             border: if g.closed {
                 Vec::with_capacity(n)
             } else {
@@ -2051,6 +2075,8 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let mut row = Row {
             f: [0.0; M],
             scale2: 0.0,
+            lip: 0.0,
+            quad: 0.0,
             d: zero,
         };
         let xk = &x[k];
@@ -2097,6 +2123,11 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             }
             row.scale2 += lin2 + t2 + sc.c6 * sc.c6;
             diag += sc.c4;
+            // `c₂S·x_{k−1}` moves by at most `c₂ω`; `T(w)` by `|B(W, W + 2w)| ≤ c_B·ω(ω + 2|w|)`
+            // (`|B(a, b)| ≤ (|κ| + |sinc′|)·|a||b|`, `W = S⁻¹Δxₖ`, `|Δxₖ| ≤ |W| ≤ ω`).
+            let c_b = sc.kappa.abs() + sc.dsinc.abs();
+            row.lip += sc.c2 + 2.0 * c_b * dotf(w_prev, w_prev).sqrt();
+            row.quad = c_b;
             // DT·S⁻¹ at the end velocity `w_prev` (the derivative of T(S⁻¹ H̃ᵀ xₖ)):
             // β·I + ê qᵀ + γ·w⊥ êᵀ with q = α·w⊥ − β·ê.
             let u = w_prev;
@@ -2128,7 +2159,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             }
             row.scale2 += sc.c2 * sc.c2 * dotf(w_next, w_next) + sc.c6 * sc.c6;
             diag += sc.c4;
+            row.lip += sc.c2 * sc.inv_sinc;
         }
+        row.lip += diag;
         for a in 0..M {
             row.f[a] += diag * xk[a];
         }
@@ -2142,17 +2175,34 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// The forward sweep at `x`: the Jacobian's rows are built and factorised, and row `k`'s
     /// residual is eliminated into `z[k]`. Returns the largest row residual relative to the
     /// size of the row's terms (infinite for a non-finite residual).
-    fn sweep(&mut self, x: &[Vf<M>], z: &mut [Vf<M>]) -> Result<f64, Singular> {
+    ///
+    /// With `ul`, `x` is first corrected ([`correct`](Self::correct)), one row ahead of the
+    /// sweep, from the right-hand side in `z` that [`linear_step`](Self::linear_step) left.
+    fn sweep(
+        &mut self,
+        x: &mut [Vf<M>],
+        z: &mut [Vf<M>],
+        ul: Option<&[f64]>,
+    ) -> Result<f64, Singular> {
         let g = self.g;
         let n = g.n;
         let mut worst2 = 0.0_f64;
+        (self.sens2, self.quad2, self.dev2) = (0.0, 0.0, 0.0);
         let mut w_prev = if g.closed {
             self.end_velocity(n - 1, true, x)
         } else {
             [0.0; M]
         };
+        let mut prev = [0.0; M];
+        if let Some(ul) = ul {
+            self.correct(0, x, z, ul, &mut prev);
+            self.correct(1, x, z, ul, &mut prev);
+        }
         self.edge_row(0, true, x, z, &mut w_prev, &mut worst2)?;
         for k in 1..n - 1 {
+            if let Some(ul) = ul {
+                self.correct(k + 1, x, z, ul, &mut prev);
+            }
             self.sweep_row(k, false, false, x, z, &mut w_prev, &mut worst2)?;
         }
         self.edge_row(n - 1, false, x, z, &mut w_prev, &mut worst2)?;
@@ -2204,6 +2254,18 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let row = self.row(k, first, last, x, w_prev, &w_next);
         *w_prev = w_next;
         raise_worst(&row.f, row.scale2, worst2);
+        // (Rows without the nonlinear term are solved exactly by a chord step.)
+        if !first || g.closed {
+            for (c, max2) in [(row.lip, &mut self.sens2), (row.quad, &mut self.quad2)] {
+                if c * c > *max2 * row.scale2 {
+                    *max2 = if row.scale2 > 0.0 {
+                        c * c / row.scale2
+                    } else {
+                        f64::INFINITY
+                    };
+                }
+            }
+        }
         put(&mut self.scale2, k, row.scale2);
         put(&mut self.dev, k, [0.0; M]);
         if g.closed && last {
@@ -2303,6 +2365,12 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         } else if g.closed {
             (g.n - 1, true)
         } else {
+            // No nonlinear term: `dev` keeps the deviation of the unknown itself (for `dev2`).
+            let w = &mut self.dev[0];
+            for i in 0..M {
+                w[i] -= d[i];
+            }
+            self.dev2 = self.dev2.max(dotf(w, w));
             return [0.0; M];
         };
         if self.fixed.is_some() && k + 1 == g.n {
@@ -2315,6 +2383,10 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let a: Vf<M> = vf(|i| s[i] - 2.0 * w[i]);
         for i in 0..M {
             w[i] -= s[i];
+        }
+        let w2 = dotf(w, w);
+        if w2 > self.dev2 {
+            self.dev2 = w2;
         }
         let f = bilinear_tf(sc, e, &a, &s);
         if seam {
@@ -2331,14 +2403,26 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// the linear part, whose blocks are `Aₖ = (2/hₖ₋₁)Sₖ₋₁`, `Dₖ = dₖ·I` and
     /// `Cₖ = (2/hₖ)Sₖ⁻¹`. Since `Aₖ₊₁Cₖ = (2/hₖ)²·I`, every pivot block of its LU factorisation is
     /// a multiple of the identity, `δₖ = dₖ − (2/hₖ₋₁)²/δₖ₋₁` (a fixed end row has no coupling),
-    /// and the step costs two sweeps of `S`-products (the Euclidean spline's recurrence).
-    fn linear_step(&self, x: &mut [Vf<M>], piv: &mut [f64]) -> f64 {
+    /// and the step costs two sweeps of `S`-products (the Euclidean spline's recurrence); `piv`
+    /// receives `1/δₖ`.
+    ///
+    /// The backward sweep also prepares the correction ([`correct`](Self::correct)): as each
+    /// `xₖ` comes out, the residual there, `T(wₖ)`, is eliminated from the last row up (the
+    /// pivots of that direction, `πₖ = dₖ − (2/hₖ)²/πₖ₊₁`, are scalars too) into `z`, and
+    /// `ul` receives `1/πₖ`.
+    fn linear_step(
+        &self,
+        x: &mut [Vf<M>],
+        piv: &mut [f64],
+        z: &mut [Vf<M>],
+        ul: &mut [f64],
+    ) -> f64 {
         let g = self.g;
         let n = g.n;
         let fixed = self.fixed.as_ref();
         let mut worst2 = 0.0_f64;
         let mut z_prev = [0.0; M];
-        let mut piv_prev = 1.0;
+        let mut inv_prev = 1.0;
         for k in 0..n {
             let mut f = [0.0; M];
             let mut scale2 = 0.0;
@@ -2375,7 +2459,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                         let sc = &g.seg[k - 1];
                         let mut az = z_prev;
                         apply_sf(&self.e[k - 1], sc.sinc, &mut az);
-                        let c = sc.c2 / piv_prev;
+                        let c = sc.c2 * inv_prev;
                         for a in 0..M {
                             z[a] -= c * az[a];
                         }
@@ -2393,16 +2477,25 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                     f64::INFINITY
                 };
             }
-            piv[k] = d;
+            let inv = 1.0 / d;
+            piv[k] = inv;
             x[k] = z;
             z_prev = z;
-            piv_prev = d;
+            inv_prev = inv;
         }
-        let mut next: Vf<M> = vf(|a| x[n - 1][a] / piv[n - 1]);
+        let mut next: Vf<M> = vf(|a| x[n - 1][a] * piv[n - 1]);
         x[n - 1] = vf(|a| -next[a]);
+        // The correction's right-hand side `T(wₖ)` (the residual at the new x) and its
+        // elimination from the last row up, as each `xₖ` comes out (see `correct`).
+        let is_fixed = |k: usize| fixed.is_some() && (k == 0 || k + 1 == n);
+        let mut zeta = self.tee(n - 1, &x[n - 1]);
+        let mut pi = self.diag(n - 1);
+        z[n - 1] = zeta;
+        ul[n - 1] = 1.0 / pi;
         for k in (0..n - 1).rev() {
             let mut t = x[k];
-            if fixed.is_none() || k > 0 {
+            let coupled_next = fixed.is_none() || k > 0;
+            if coupled_next {
                 let sc = &g.seg[k];
                 let mut c = next;
                 apply_sf(&self.e[k], sc.inv_sinc, &mut c);
@@ -2410,10 +2503,78 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                     t[a] -= sc.c2 * c[a];
                 }
             }
-            next = vf(|a| t[a] / piv[k]);
+            next = vf(|a| t[a] * piv[k]);
             x[k] = vf(|a| -next[a]);
+            let mut r = self.tee(k, &x[k]);
+            let mut d = self.diag(k);
+            if coupled_next {
+                let sc = &g.seg[k];
+                let c = sc.c2 * ul[k + 1];
+                apply_sf(&self.e[k], sc.inv_sinc, &mut zeta);
+                for a in 0..M {
+                    r[a] -= c * zeta[a];
+                }
+                if !is_fixed(k + 1) {
+                    d -= sc.c2 * c;
+                }
+            }
+            zeta = r;
+            pi = d;
+            z[k] = zeta;
+            ul[k] = 1.0 / pi;
         }
         worst2.sqrt()
+    }
+
+    /// The nonlinear term `T(wₖ)` of row `k` of an open curve at `xₖ` (0 for the rows without
+    /// it: the first and the fixed ones).
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+    fn tee(&self, k: usize, xk: &Vf<M>) -> Vf<M> {
+        let mut f = [0.0; M];
+        if k > 0 && !(self.fixed.is_some() && k + 1 == self.g.n) {
+            let (sc, e) = (&self.g.seg[k - 1], &self.e[k - 1]);
+            let mut w = *xk;
+            apply_sf(e, sc.inv_sinc, &mut w);
+            add_tf(sc, e, &w, &mut f);
+        }
+        f
+    }
+
+    /// The diagonal of row `k` of an open curve's linear part (a multiple of `I`).
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+    fn diag(&self, k: usize) -> f64 {
+        let (g, n) = (self.g, self.g.n);
+        if self.fixed.is_some() && (k == 0 || k + 1 == n) {
+            g.seg[k.min(n - 2)].c4
+        } else {
+            let before = if k > 0 { g.seg[k - 1].c4 } else { 0.0 };
+            let after = if k + 1 < n { g.seg[k].c4 } else { 0.0 };
+            before + after
+        }
+    }
+
+    /// Row `k` of the correction `x ← x − J(0)⁻¹T(w(x))` after
+    /// [`linear_step`](Self::linear_step) (an open curve), which leaves the right-hand side
+    /// eliminated from the last row up in `z` and those pivots in `ul`: the forward
+    /// substitution, `prev` the correction of the row before. The linear part is solved at
+    /// the linear step's `x`, so the residual there is the nonlinear term; this step with the
+    /// linear Jacobian (scalar pivots, as in the linear step) takes `x` about 30× closer to the
+    /// solution before Newton's first factorisation.
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+    fn correct(&self, k: usize, x: &mut [Vf<M>], z: &[Vf<M>], ul: &[f64], prev: &mut Vf<M>) {
+        let g = self.g;
+        let mut t = z[k];
+        if k > 0 && !(self.fixed.is_some() && k + 1 == g.n) {
+            let sc = &g.seg[k - 1];
+            apply_sf(&self.e[k - 1], sc.sinc, prev);
+            for a in 0..M {
+                t[a] -= sc.c2 * prev[a];
+            }
+        }
+        *prev = vf(|a| t[a] * ul[k]);
+        for a in 0..M {
+            x[k][a] -= prev[a];
+        }
     }
 
     /// Closed: `Zₖ` from the eliminated border column, and the inverse Schur complement.
@@ -2443,6 +2604,21 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         }
         self.schur_inv = invertf(&s).ok_or(Singular)?;
         Ok(())
+    }
+
+    /// The updated residual `worst` (each row relative to the size of its terms at the last
+    /// evaluation, [`back`](Self::back)) as a bound of the relative residual at the new `x`:
+    /// no unknown has moved by more than `ω` (`ω² ≤ dev2`) since, so the size of row `k`'s
+    /// terms is at least `√scale2ₖ − Lₖω − Qₖω² ≥ √scale2ₖ·(1 − δ)` with
+    /// `δ = ω·√sens2 + ω²·√quad2`, and the relative residual at most `worst/(1 − δ)`.
+    /// Infinite (no bound) unless `δ < 1`.
+    fn bound(&self, worst: f64) -> f64 {
+        let delta = (self.sens2 * self.dev2).sqrt() + self.dev2 * self.quad2.sqrt();
+        if delta < 1.0 {
+            worst / (1.0 - delta)
+        } else {
+            f64::INFINITY
+        }
     }
 
     /// The backward sweep: `x ← x − J⁻¹F` from the eliminated residual `z`, which is
@@ -2525,14 +2701,21 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         // The Jacobian at x = 0 is the linear part: the first step is scipy's first iterate.
         let mut residual;
         if self.g.closed {
-            residual = self.sweep(&x, &mut z).map_err(|_| fail(info))?;
+            residual = self.sweep(&mut x, &mut z, None).map_err(|_| fail(info))?;
         } else {
-            let mut piv = vec![0.0; n];
-            residual = self.linear_step(&mut x, &mut piv);
+            let (mut piv, mut ul) = (vec![0.0; n], vec![0.0; n]);
+            residual = self.linear_step(&mut x, &mut piv, &mut z, &mut ul);
             if residual > TARGET_RESIDUAL {
                 info.iterations = 1;
                 info.factorizations = 2;
-                let new = self.sweep(&x, &mut z).map_err(|_| fail(info))?;
+                let mut new = self
+                    .sweep(&mut x, &mut z, Some(&ul))
+                    .unwrap_or(f64::INFINITY);
+                if !new.is_finite() || new >= residual {
+                    // The correction did not help (far from the linear solution): without it.
+                    self.linear_step(&mut x, &mut piv, &mut z, &mut ul);
+                    new = self.sweep(&mut x, &mut z, None).map_err(|_| fail(info))?;
+                }
                 if !new.is_finite() || new >= residual {
                     info.residual = new;
                     return Err(fail(info));
@@ -2545,21 +2728,14 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         info.residual = residual;
         // Whether the factors were built at the current `x` (and `residual` evaluated there).
         let mut fresh = true;
-        let target = |fresh: bool| {
-            if fresh {
-                TARGET_RESIDUAL
-            } else {
-                UPDATED_TARGET
-            }
-        };
-        while residual > target(fresh) && info.iterations < MAX_ITERATIONS {
+        while residual > TARGET_RESIDUAL && info.iterations < MAX_ITERATIONS {
             let updated = self.back(&mut z, &mut x);
             info.iterations += 1;
             // Refactorise after the first step of a loop (from x = 0).
             let refactor = info.iterations == 1;
             let mut new = if refactor {
                 info.factorizations += 1;
-                self.sweep(&x, &mut z).map_err(|_| fail(info))?
+                self.sweep(&mut x, &mut z, None).map_err(|_| fail(info))?
             } else {
                 updated
             };
@@ -2573,11 +2749,16 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                 break;
             }
             fresh = refactor;
-            if !refactor && new > target(false) {
+            if !refactor {
+                // The updated residual is relative to the terms at the last evaluation.
+                new = self.bound(new);
+                info.residual = new;
+            }
+            if !refactor && new > TARGET_RESIDUAL {
                 if new > 0.1 * residual {
                     // Slow convergence: refactorise at this x (the sweep again, with the factors).
                     info.factorizations += 1;
-                    new = self.sweep(&x, &mut z).map_err(|_| fail(info))?;
+                    new = self.sweep(&mut x, &mut z, None).map_err(|_| fail(info))?;
                     fresh = true;
                 } else if info.iterations < MAX_ITERATIONS {
                     // The next chord step (not needed once the residual meets the target).
@@ -2840,12 +3021,12 @@ mod tests {
     }
 
     /// The chord steps' residuals come from the exact quadratic update, not from evaluating
-    /// the equations: the reported residual must be the one the equations give at the
-    /// solution (evaluated by a fresh sweep), and the solution the slice solver's (which
-    /// evaluates every step).
+    /// the equations: the reported residual must bound the one the equations give at the
+    /// solution (evaluated by a fresh sweep) and be close to it, and the solution must be the
+    /// slice solver's (which evaluates every step).
     #[test]
     fn chord_residual_updates_equal_the_evaluated_residual() {
-        let mut checked = 0;
+        let (mut checked, mut compared) = (0, 0);
         for case in 0..40_usize {
             let m = 1 + case % 3;
             let closed = case % 4 == 3;
@@ -2862,28 +3043,69 @@ mod tests {
                 .collect();
             let mut z = vec![[0.0; 3]; n];
             let evaluated = FixedSolver::<3>::new(&geo)
-                .sweep(&xv, &mut z)
+                .sweep(&mut xv.clone(), &mut z, None)
                 .unwrap_or(f64::INFINITY);
             assert!(
                 info.residual <= TARGET_RESIDUAL && evaluated <= TARGET_RESIDUAL,
                 "seed {seed}: reported {:e}, evaluated {evaluated:e}",
                 info.residual
             );
+            // The reported residual of a chord step bounds the evaluated one (up to the rounding
+            // of the solve, which the update leaves out); it is about as large (within 3× on
+            // these systems, 0.1–12 % on most).
             assert!(
-                (evaluated - info.residual).abs() <= 0.25 * info.residual + 1e-15,
+                evaluated <= 1.25 * info.residual + 1e-15
+                    && info.residual <= 4.0 * evaluated + 1e-15,
                 "seed {seed}: reported {:e}, evaluated {evaluated:e}",
                 info.residual
             );
-            let (y, _) = geo
-                .solve(Dynamic(m))
-                .expect("the slice solver converges too");
+            checked += 1;
+            // (The slice solver, without the correction step, fails on a few systems that
+            // this one solves.)
+            let Ok((y, _)) = geo.solve(Dynamic(m)) else {
+                continue;
+            };
             let scale = y.iter().fold(1.0_f64, |s, v| s.max(v.abs()));
             for (a, b) in x.iter().zip(&y) {
                 assert!((a - b).abs() <= 1e-11 * scale, "seed {seed}: {a} vs {b}");
             }
-            checked += 1;
+            compared += 1;
         }
         assert!(checked >= 30, "only {checked} of 40 systems converged");
+        assert!(compared >= 25, "only {compared} of 40 systems compared");
+    }
+
+    /// The correction after the linear step ([`FixedSolver::correct`]) brings the first
+    /// iterate closer: the residual where Newton's first factorisation is evaluated falls.
+    #[test]
+    fn the_correction_brings_the_first_iterate_closer() {
+        let mut ratios = Vec::new();
+        for case in 0..40_usize {
+            let (m, fixed, n) = (1 + case % 3, case % 2 == 1, 3 + (case * 7) % 40);
+            let geo = random_geometry(100 + case as u64, n, m, false, fixed);
+            let residual_at = |correct: bool| {
+                let mut solver = FixedSolver::<3>::new(&geo);
+                let (mut x, mut z) = (vec![[0.0; 3]; n], vec![[0.0; 3]; n]);
+                let (mut piv, mut ul) = (vec![0.0; n], vec![0.0; n]);
+                solver.linear_step(&mut x, &mut piv, &mut z, &mut ul);
+                let ul = correct.then_some(&ul[..]);
+                solver.sweep(&mut x, &mut z, ul).unwrap_or(f64::INFINITY)
+            };
+            let (plain, corrected) = (residual_at(false), residual_at(true));
+            if plain > 1e-12 {
+                ratios.push(corrected / plain);
+            }
+        }
+        // On these systems (angles to 2 rad, widths 0.05–5: far from the linear solution) it
+        // halves the residual typically, by 5× at best, 13 % worse at worst; on the benchmarks'
+        // keys by 30× (the module documentation).
+        ratios.sort_by(f64::total_cmp);
+        assert!(ratios.len() >= 20, "{ratios:?}");
+        assert!(ratios[ratios.len() / 2] < 0.6, "{ratios:?}");
+        assert!(
+            ratios[0] < 0.25 && ratios[ratios.len() - 1] < 1.2,
+            "{ratios:?}"
+        );
     }
 
     #[test]
