@@ -389,7 +389,8 @@ impl<P: Manifold> CubicSpline<P> {
         let mut thetas = Vec::with_capacity(nseg);
         let mut sin_cos = Vec::with_capacity(nseg);
         for i in 0..nseg {
-            let (p, q) = (points[i].to_vector(), points[(i + 1) % n].to_vector());
+            let next = if i + 1 == n { 0 } else { i + 1 };
+            let (p, q) = (points[i].to_vector(), points[next].to_vector());
             let (theta, e, sc) = geodesic_frame_sin_cos(&p, &q).ok_or(if i + 1 == n {
                 SplineError::AntipodalClosing
             } else {
@@ -2682,8 +2683,15 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         worst2.sqrt()
     }
 
-    /// [`Geometry::solve`] for the fixed dimension.
+    /// [`Geometry::solve`] for the fixed dimension: with the correction of the linear step
+    /// ([`correct`](Self::correct)), and without it if that fails (far from the linear
+    /// solution the correction can lead Newton's method astray, as on keys of alternating signs
+    /// on S³, where the uncorrected iteration still converges).
     fn solve(mut self) -> Result<(Vec<f64>, CubicSolveInfo), SplineError> {
+        self.run(true).or_else(|_| self.run(false))
+    }
+
+    fn run(&mut self, correct: bool) -> Result<(Vec<f64>, CubicSolveInfo), SplineError> {
         let n = self.g.n;
         let mut x = vec![[0.0; M]; n];
         let mut z = vec![[0.0; M]; n];
@@ -2708,14 +2716,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             if residual > TARGET_RESIDUAL {
                 info.iterations = 1;
                 info.factorizations = 2;
-                let mut new = self
-                    .sweep(&mut x, &mut z, Some(&ul))
-                    .unwrap_or(f64::INFINITY);
-                if !new.is_finite() || new >= residual {
-                    // The correction did not help (far from the linear solution): without it.
-                    self.linear_step(&mut x, &mut piv, &mut z, &mut ul);
-                    new = self.sweep(&mut x, &mut z, None).map_err(|_| fail(info))?;
-                }
+                let new = self
+                    .sweep(&mut x, &mut z, correct.then_some(&ul[..]))
+                    .map_err(|_| fail(info))?;
                 if !new.is_finite() || new >= residual {
                     info.residual = new;
                     return Err(fail(info));
