@@ -2410,7 +2410,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// The backward sweep also prepares the correction ([`correct`](Self::correct)): as each
     /// `xₖ` comes out, the residual there, `T(wₖ)`, is eliminated from the last row up (the
     /// pivots of that direction, `πₖ = dₖ − (2/hₖ)²/πₖ₊₁`, are scalars too) into `z`, and
-    /// `ul` receives `1/πₖ`.
+    /// `ul` receives `1/πₖ` (the forward sweep leaves the diagonal `dₖ` there).
     fn linear_step(
         &self,
         x: &mut [Vf<M>],
@@ -2441,6 +2441,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                     }
                     scale2 = c4 * c4 * dotf(gk, gk);
                     d = c4;
+                    ul[k] = d;
                     z = f;
                 }
                 _ => {
@@ -2456,6 +2457,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                         d += sc.c4;
                     }
                     z = f;
+                    ul[k] = d;
                     if k > 0 {
                         let sc = &g.seg[k - 1];
                         let mut az = z_prev;
@@ -2490,7 +2492,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         // elimination from the last row up, as each `xₖ` comes out (see `correct`).
         let is_fixed = |k: usize| fixed.is_some() && (k == 0 || k + 1 == n);
         let mut zeta = self.tee(n - 1, &x[n - 1]);
-        let mut pi = self.diag(n - 1);
+        let mut pi = ul[n - 1];
         z[n - 1] = zeta;
         ul[n - 1] = 1.0 / pi;
         for k in (0..n - 1).rev() {
@@ -2507,7 +2509,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             next = vf(|a| t[a] * piv[k]);
             x[k] = vf(|a| -next[a]);
             let mut r = self.tee(k, &x[k]);
-            let mut d = self.diag(k);
+            let mut d = ul[k];
             if coupled_next {
                 let sc = &g.seg[k];
                 let c = sc.c2 * ul[k + 1];
@@ -2539,19 +2541,6 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             add_tf(sc, e, &w, &mut f);
         }
         f
-    }
-
-    /// The diagonal of row `k` of an open curve's linear part (a multiple of `I`).
-    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn diag(&self, k: usize) -> f64 {
-        let (g, n) = (self.g, self.g.n);
-        if self.fixed.is_some() && (k == 0 || k + 1 == n) {
-            g.seg[k.min(n - 2)].c4
-        } else {
-            let before = if k > 0 { g.seg[k - 1].c4 } else { 0.0 };
-            let after = if k + 1 < n { g.seg[k].c4 } else { 0.0 };
-            before + after
-        }
     }
 
     /// Row `k` of the correction `x ← x − J(0)⁻¹T(w(x))` after
