@@ -997,11 +997,17 @@ impl Frames {
             if k == nseg {
                 break;
             }
-            let j = if k + 1 == geo.n { 0 } else { k + 1 };
-            geo.to_segment_end(k, &x[j * m..(j + 1) * m], &mut u);
-            apply_s(geo.ehat(k), geo.seg[k].inv_sinc, &mut u);
-            self.combine_in(d, k, &u, &mut big_u);
+            // `U = S⁻¹·(Vₖ₊₁ transported back)`, with `S⁻¹ = I/sinc θ + (1 − 1/sinc θ)·e eᵀ` in
+            // span coordinates.
+            let next = if k + 1 == geo.n {
+                geo.to_segment_end(k, &x[..m], &mut u);
+                &u[..]
+            } else {
+                &x[(k + 1) * m..(k + 2) * m]
+            };
+            self.combine_in(d, k, next, &mut big_u);
             let (sc, e) = (&geo.seg[k], &es[k * r..(k + 1) * r]);
+            apply_s(e, sc.inv_sinc, &mut big_u[..r]);
             let (h, theta) = (sc.h, sc.theta);
             for (o, va) in coef[..r].iter_mut().zip(&v) {
                 *o = va * h;
