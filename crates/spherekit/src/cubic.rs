@@ -2183,7 +2183,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// residual is eliminated into `z[k]`. Returns the largest row residual relative to the
     /// size of the row's terms (infinite for a non-finite residual).
     ///
-    /// With `ul`, `x` is first corrected ([`correct`](Self::correct)), two rows ahead of the
+    /// With `ul`, `x` is first corrected ([`correct`](Self::correct)), one row ahead of the
     /// sweep, from the right-hand side in `z` that [`linear_step`](Self::linear_step) left.
     fn sweep(
         &mut self,
@@ -2201,18 +2201,14 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             [0.0; M]
         };
         let mut prev = [0.0; M];
-        // Two rows ahead: row k reads x[k + 1], and a value just stored is slow to load.
         if let Some(ul) = ul {
-            for k in 0..n.min(3) {
-                self.correct(k, x, z, ul, &mut prev);
-            }
+            self.correct(0, x, z, ul, &mut prev);
+            self.correct(1, x, z, ul, &mut prev);
         }
         self.edge_row(0, true, x, z, &mut w_prev, &mut worst2)?;
         for k in 1..n - 1 {
-            if let Some(ul) = ul
-                && k + 2 < n
-            {
-                self.correct(k + 2, x, z, ul, &mut prev);
+            if let Some(ul) = ul {
+                self.correct(k + 1, x, z, ul, &mut prev);
             }
             self.sweep_row(k, false, false, x, z, &mut w_prev, &mut worst2)?;
         }
