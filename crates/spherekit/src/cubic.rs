@@ -1735,6 +1735,15 @@ fn bilinear_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, a: &Vf<M>, b: &Vf<M>) -
     vf(|i| c1 * e[i] + sc.dsinc * (ae * b[i] + be * a[i]))
 }
 
+/// `zₖ ← zₖ − l·zₖ₋₁`.
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn eliminate_with<const M: usize>(l: &Bf<M>, k: usize, z: &mut [Vf<M>]) {
+    let t = mat_vecf(l, &z[k - 1]);
+    for a in 0..M {
+        z[k][a] -= t[a];
+    }
+}
+
 /// `v[k] = value`, or `v.push(value)` when `k == v.len()`: the first factorisation fills the
 /// solver's rows in order, so they are not zeroed first.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
@@ -2328,10 +2337,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         // The elimination with the row's own `l` (not read back from `fac`, just stored).
         z[k] = row.f;
         if !first {
-            let t = mat_vecf(&l, &z[k - 1]);
-            for a in 0..M {
-                z[k][a] -= t[a];
-            }
+            eliminate_with(&l, k, z);
         }
         put(&mut self.fac, k, RowFactors { l, dinv, gm });
         Ok(())
@@ -2340,10 +2346,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// `zₖ ← zₖ − Lₖ zₖ₋₁`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn eliminate_row(&self, k: usize, z: &mut [Vf<M>]) {
-        let t = mat_vecf(&self.fac[k].l, &z[k - 1]);
-        for a in 0..M {
-            z[k][a] -= t[a];
-        }
+        eliminate_with(&self.fac[k].l, k, z);
     }
 
     /// The forward elimination of a chord step: `z` holds the residual `F(x)` (from
