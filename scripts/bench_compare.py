@@ -62,28 +62,43 @@ def rust():
     return json.loads(out)
 
 
-PAIRED_ROUNDS = {"build": 15, "rates": 9}
+# The paired rounds: (name, request of `bench_json paired`, rounds, turns per round, peer runs
+# per turn). Each turn times the peer, then spherekit (one untimed run, then `N` timed ones, the
+# request's `N`); a round's timing on each side is its best over the round's turns. "build" and
+# "rates" interleave the two sides one run at a time, so that both sides' best is taken over the
+# same stretch of time (this machine's speed changes in episodes longer than a 1 000-key
+# construction: a spherekit best of 21 in a row came out at 275 µs or 410 µs, both often, with
+# nothing else running); "build, consecutive" times 21 runs in a row on each side, as the rounds
+# did up to stop 29.
+PAIRED = [
+    ("build", "build 1", 15, 21, 1),
+    ("rates", "rates 1", 9, 3, 1),
+    ("build, consecutive", "build 21", 15, 1, 21),
+]
 
 
 def paired_rounds(peers):
-    """The cubic against scipy's `RotationSpline` in rounds that alternate the two, one after the
-    other, so that both sides of a round's ratio see the same load; the Rust side answers from one
-    process that stays up, as the Python one does. `peers` maps a request of `bench_json paired`
-    (`build`: 1 000-key construction, best of 21; `rates`: point, rate and acceleration per
-    sample, best of 5) to scipy's timing of the same thing. Returns {request: [(scipy, spherekit)]}."""
+    """The cubic against scipy's `RotationSpline` in rounds that alternate the two, so that both
+    sides of a round's ratio see the same load ([`PAIRED`]); the Rust side answers from one
+    process that stays up, as the Python one does. `peers` maps a request kind (`build`: the
+    1 000-key construction; `rates`: point, rate and acceleration per sample) to a function of a
+    run count giving scipy's best time of that many runs. Returns {name: [(scipy, spherekit)]}."""
     cmd = ["cargo", "run", "--quiet", "--release", "-p", "spherekit", "--example", "bench_json",
            "--", "paired"]
     rounds = {}
     with subprocess.Popen(cmd, cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True) as own:
-        for request, peer in peers.items():
-            rounds[request] = []
-            for i in range(PAIRED_ROUNDS[request] + 1):
-                theirs = peer()
-                own.stdin.write(request + "\n")
-                own.stdin.flush()
-                ours = float(own.stdout.readline())
+        for name, request, count, turns, peer_runs in PAIRED:
+            peer = peers[request.split()[0]]
+            rounds[name] = []
+            for i in range(count + 1):
+                theirs = ours = float("inf")
+                for _ in range(turns):
+                    theirs = min(theirs, peer(peer_runs))
+                    own.stdin.write(request + "\n")
+                    own.stdin.flush()
+                    ours = min(ours, float(own.stdout.readline()))
                 if i > 0:  # the first round warms both sides up
-                    rounds[request].append((theirs, ours))
+                    rounds[name].append((theirs, ours))
         own.stdin.close()
     return rounds
 
@@ -163,8 +178,8 @@ def main():
     # Best of 21, as many runs as spherekit's 1 000-key builds get in bench_json.
     build1000, _ = best(lambda: RotationSpline(times1000, rot1000), reps=21)
     paired = paired_rounds({
-        "build": lambda: best(lambda: RotationSpline(times1000, rot1000), reps=21)[0],
-        "rates": lambda: best(lambda: (spline(ts), spline(ts, 1), spline(ts, 2)), reps=3)[0] / n,
+        "build": lambda reps: best(lambda: RotationSpline(times1000, rot1000), reps=reps)[0],
+        "rates": lambda reps: best(lambda: (spline(ts), spline(ts, 1), spline(ts, 2)), reps=reps)[0] / n,
     })
 
     # splines (pure Python), on SLOW_SAMPLES parameters.
@@ -265,14 +280,18 @@ def write(r, peers, build20, build1000, paired, up0, up1):
                      f"{build1000 / m['build_1000_ns']:.1f}× |")
     lines.append("")
     lines.append(
-        "Paired rounds, `cubic` against `RotationSpline`, alternated one after the other so that both "
-        "sides of a ratio see the same load (scipy best of 21 constructions or of 3 evaluations, "
-        "spherekit best of 21 or 5):"
+        "Paired rounds, `cubic` against `RotationSpline` on the same keys, so that both sides of a "
+        "ratio see the same load. Interleaved: one scipy run, then one spherekit run (after an untimed "
+        "one), 21 times a round for the construction and 3 for the evaluation, the best of each side "
+        "per round; consecutive (the protocol up to stop 29): scipy's best of 21 constructions, then "
+        "spherekit's best of 21:"
     )
     lines.append("")
-    lines.append(paired_line("construction, 1 000 keys", paired["build"], "µs", 1e3))
-    lines.append(paired_line("rotation + rate + acceleration per sample, 20 keys, 200 000 parameters",
-                             paired["rates"], "ns", 1))
+    lines.append(paired_line("construction, 1 000 keys, interleaved", paired["build"], "µs", 1e3))
+    lines.append(paired_line("rotation + rate + acceleration per sample, 20 keys, 200 000 parameters, "
+                             "interleaved", paired["rates"], "ns", 1))
+    lines.append(paired_line("construction, 1 000 keys, consecutive", paired["build, consecutive"],
+                             "µs", 1e3))
     lines.append("")
     lines.append(
         f"Date {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "

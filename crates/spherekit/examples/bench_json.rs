@@ -8,11 +8,11 @@
 //!
 //! `cargo run --release -p spherekit --example bench_json [SAMPLES] [KEYS]`
 //!
-//! `bench_json paired` answers each line it reads, `build` or `rates`, with one timing in ns:
-//! the best of 21 constructions of the cubic (scipy ends) on the benches' 1 000 keys, or the best
-//! of 5 runs of its rates per sample (as in the main report): the paired rounds of
-//! `bench_compare.py`, which alternate them with scipy's `RotationSpline` on the same keys, both
-//! in processes that stay up.
+//! `bench_json paired` answers each line it reads, `build N` or `rates N`, with one timing in
+//! ns: after one untimed run, the best of `N` constructions of the cubic (scipy ends) on the
+//! benches' 1 000 keys, or of `N` runs of its rates per sample (as in the main report): the
+//! paired rounds of `bench_compare.py`, which alternate them with scipy's `RotationSpline` on the
+//! same keys, both in processes that stay up.
 
 #![allow(
     clippy::cast_precision_loss,
@@ -157,24 +157,30 @@ fn paired() {
     let mut jets = vec![cubic.jet(ts[0]); samples];
     let mut rates = vec![(DVec3::ZERO, DVec3::ZERO); samples];
     for line in std::io::stdin().lines() {
-        let ns = match line.unwrap().as_str() {
-            "build" => best(21, 1, || {
-                black_box(
-                    CubicSpline::try_new(
-                        black_box(keys_1000.clone()),
-                        None,
-                        CubicEnd::Scipy,
-                        false,
-                    )
+        let line = line.unwrap();
+        let (request, runs) = line.split_once(' ').unwrap();
+        let runs: usize = runs.parse().unwrap();
+        let build = || {
+            black_box(
+                CubicSpline::try_new(black_box(keys_1000.clone()), None, CubicEnd::Scipy, false)
                     .unwrap(),
-                );
-            }),
-            "rates" => best(5, samples, || {
-                cubic.jet_many(black_box(&ts), &mut jets);
-                for (o, j) in rates.iter_mut().zip(&jets) {
-                    *o = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
-                }
-            }),
+            );
+        };
+        let mut rates_run = || {
+            cubic.jet_many(black_box(&ts), &mut jets);
+            for (o, j) in rates.iter_mut().zip(&jets) {
+                *o = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
+            }
+        };
+        let ns = match request {
+            "build" => {
+                build();
+                best(runs, 1, build)
+            }
+            "rates" => {
+                rates_run();
+                best(runs, samples, rates_run)
+            }
             other => panic!("unknown request {other:?}"),
         };
         println!("{ns}");
