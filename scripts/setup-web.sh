@@ -5,8 +5,8 @@
 #
 #   bash scripts/setup-web.sh [--e2e] <command>...
 #
-# wasm-pack cannot download its own tools here, so it gets the wasm-bindgen CLI of exactly the
-# version in Cargo.lock and a wasm-opt on PATH.
+# The web build (the justfile's `web`) runs cargo, then the wasm-bindgen CLI of exactly the
+# version in Cargo.lock, then binaryen's wasm-opt; the wasm tests use that CLI's test runner.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools="$PWD/.tools"
@@ -47,15 +47,9 @@ if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $bindgen_versio
     || cargo install --quiet wasm-bindgen-cli --version "$bindgen_version" --root "$tools"
 fi
 
-if ! command -v wasm-pack >/dev/null 2>&1; then
-  echo "setup-web: installing wasm-pack into .tools/" >&2
-  cargo install --locked --quiet wasm-pack --version 0.13.1 --root "$tools" \
-    || cargo install --quiet wasm-pack --version 0.13.1 --root "$tools"
-fi
-
 # wasm-opt: Debian's binaryen (version 108) cannot read the reference-types output of current
 # wasm-bindgen (it stops at `table.fill`), so take binaryen's own build from the npm registry
-# (it runs on node) and put it first on PATH for wasm-pack.
+# (it runs on node) and put it first on PATH.
 binaryen_version=123.0.0
 if ! "$tools/bin/wasm-opt" --version 2>/dev/null | grep -q "version ${binaryen_version%%.*}"; then
   echo "setup-web: installing binaryen $binaryen_version (wasm-opt) into .tools/" >&2
