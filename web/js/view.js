@@ -152,11 +152,12 @@ export function drawOverlay() {
     ctx.moveTo(x, p.top);
     ctx.lineTo(x, p.bottom);
     ctx.stroke();
+    // The head hangs inside the axes, from their top edge: above it is the plot's title.
     ctx.fillStyle = '#b3261e';
     ctx.beginPath();
-    ctx.moveTo(x - 5 * k, p.top - 6 * k);
-    ctx.lineTo(x + 5 * k, p.top - 6 * k);
-    ctx.lineTo(x, p.top);
+    ctx.moveTo(x - 5 * k, p.top);
+    ctx.lineTo(x + 5 * k, p.top);
+    ctx.lineTo(x, p.top + 6 * k);
     ctx.fill();
   }
   if (state.hover && !sameKey(state.hover, state.selected)) {
