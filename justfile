@@ -107,8 +107,8 @@ fuzz seconds="600" target="all":
 # ---- web: wasm bindings, playground, docs widget -------------------------------------------
 
 # Build the wasm package into web/pkg (installs wasm-bindgen and wasm-opt when missing): the
-# crate for the browser, its JavaScript glue (`wasm-bindgen --target web`), then `wasm-opt` for size,
-# and web/pkg/presets.json, the example menu, from the golden scenes (scripts/web_presets.py).
+# crate for the browser, its JavaScript glue (`wasm-bindgen --target web`), `wasm-opt` for size;
+# then web/pkg/presets.json, the example menu, from the golden scenes (scripts/web_presets.py).
 # Two size flags for this build only (44 KB of the .wasm, BENCHMARKS.md section 6), which stable
 # rustc accepts with RUSTC_BOOTSTRAP: `-Z location-detail=none` drops the file/line/column of
 # panic locations, `-Z fmt-debug=shallow` makes derived `Debug` print the type or variant name
@@ -124,8 +124,8 @@ web:
     CARGO_UNSTABLE_BUILD_STD=std,panic_abort CARGO_UNSTABLE_BUILD_STD_FEATURES=optimize_for_size \
     CARGO_PROFILE_RELEASE_OPT_LEVEL=z CARGO_PROFILE_RELEASE_LTO=true CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1 \
     CARGO_PROFILE_RELEASE_PANIC=abort bash scripts/setup-web.sh cargo build -p spherekit-wasm --lib --release --target wasm32-unknown-unknown --locked
-    wasm-bindgen target/wasm32-unknown-unknown/release/spherekit_wasm.wasm --target web --no-typescript --out-dir web/pkg
-    wasm-opt web/pkg/spherekit_wasm_bg.wasm -o web/pkg/spherekit_wasm_bg.wasm -Oz --strip-debug --strip-producers \
+    bash scripts/setup-web.sh wasm-bindgen target/wasm32-unknown-unknown/release/spherekit_wasm.wasm --target web --no-typescript --out-dir web/pkg
+    bash scripts/setup-web.sh wasm-opt web/pkg/spherekit_wasm_bg.wasm -o web/pkg/spherekit_wasm_bg.wasm -Oz --strip-debug --strip-producers \
         --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue
     python3 scripts/web_presets.py
 

@@ -4,8 +4,8 @@
 """Writes the playground's example menu, web/pkg/presets.json, from the golden scenes.
 
 The golden-image scenes (tests/golden/*.json) are the one source; `just web` runs this after
-the wasm build. The file is `[{"name", "scene"}, ...]` sorted by name, each scene as its JSON text
-(the page loads it with fetch instead of the .wasm carrying 15 KB of scene text).
+the wasm build. The file is `[{"name", "scene"}, ...]` sorted by name, each scene as its JSON
+text (the page loads it with fetch instead of the .wasm carrying 15 KB of scene text).
 """
 
 import json
