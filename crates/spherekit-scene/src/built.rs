@@ -600,6 +600,10 @@ pub(crate) mod on_sn {
             self.curve.is_closed()
         }
 
+        fn is_antiperiodic(&self) -> bool {
+            self.curve.is_antiperiodic()
+        }
+
         fn jet_at(&self, t: f64, side: Side) -> Jet<Q> {
             self.jet(&self.curve.jet_at(t, side))
         }

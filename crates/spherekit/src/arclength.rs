@@ -868,6 +868,10 @@ impl<C: Curve> Curve for ArcLength<C> {
         self.curve.is_closed()
     }
 
+    fn is_antiperiodic(&self) -> bool {
+        self.curve.is_antiperiodic()
+    }
+
     fn jet_at(&self, s: f64, side: Side) -> Jet<C::Point> {
         let (t, inner) = self.curve_param(s, side);
         reparametrise(self.curve.jet_at(t, inner), side, self.table.noise)

@@ -111,7 +111,8 @@ impl JointContinuity {
 /// The jumps of point, velocity and acceleration at every interior joint of `curve` (the
 /// entries of [`Curve::joints`] other than the two ends), from [`Curve::jet_at`] on both sides.
 /// A closed curve ([`Curve::is_closed`]) has one more joint, the seam, reported last with
-/// `t = t1`: the end from the left, `c(t1⁻)`, against the start from the right, `c(t0⁺)`.
+/// `t = t1`: the end from the left, `c(t1⁻)`, against the start from the right, `c(t0⁺)`
+/// (against `−c(t0⁺)` for a loop that ends at the antipode, [`Curve::is_antiperiodic`]).
 ///
 /// # Examples
 ///
@@ -142,11 +143,13 @@ pub fn continuity<C: Curve + ?Sized>(curve: &C) -> Vec<JointContinuity> {
         .map(|&t| jumps(t, curve.jet_at(t, Side::Left), curve.jet_at(t, Side::Right)))
         .collect();
     if curve.is_closed() {
-        out.push(jumps(
-            last,
-            curve.jet_at(last, Side::Left),
-            curve.jet_at(first, Side::Right),
-        ));
+        let start = curve.jet_at(first, Side::Right);
+        let start = if curve.is_antiperiodic() {
+            start.antipode()
+        } else {
+            start
+        };
+        out.push(jumps(last, curve.jet_at(last, Side::Left), start));
     }
     out
 }

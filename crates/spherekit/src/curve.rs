@@ -63,6 +63,17 @@ pub trait Curve: core::fmt::Debug {
         false
     }
 
+    /// Whether the curve is a closed loop that ends at the antipode of its start,
+    /// `c(t1) = −c(t0)`, and continues antiperiodically, `c(t + T) = −c(t)`: a loop of
+    /// rotations that turns by an odd number of full turns, whose quaternions end at `−q₀`, the
+    /// same rotation ([`RotationLoop`](crate::RotationLoop)). Its seam is a joint like the
+    /// others up to that sign: [`continuity`](crate::continuity) compares the end with the
+    /// antipode of the start, and [`Extrapolate::Cycle`](crate::Extrapolate::Cycle) negates
+    /// every other lap. `false` unless the curve was built so.
+    fn is_antiperiodic(&self) -> bool {
+        false
+    }
+
     /// The point and derivatives at `t`; at a joint, the one-sided limit from `side`.
     fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point>;
 
@@ -161,6 +172,10 @@ impl<C: Curve + ?Sized> Curve for &C {
         (**self).is_closed()
     }
 
+    fn is_antiperiodic(&self) -> bool {
+        (**self).is_antiperiodic()
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point> {
         (**self).jet_at(t, side)
     }
@@ -203,6 +218,10 @@ impl<C: Curve + ?Sized> Curve for Box<C> {
         (**self).is_closed()
     }
 
+    fn is_antiperiodic(&self) -> bool {
+        (**self).is_antiperiodic()
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<Self::Point> {
         (**self).jet_at(t, side)
     }
@@ -225,6 +244,18 @@ impl<C: Curve + ?Sized> Curve for Box<C> {
 
     fn jet_beyond(&self, t: f64) -> Option<Jet<Self::Point>> {
         (**self).jet_beyond(t)
+    }
+}
+
+impl<P: Manifold> Jet<P> {
+    /// The jet of the antipodal curve `−c` at the same parameter: every vector negated.
+    #[must_use]
+    pub fn antipode(self) -> Self {
+        Self {
+            point: P::from_vector_unchecked(-self.point.to_vector()),
+            velocity: -self.velocity,
+            acceleration: -self.acceleration,
+        }
     }
 }
 

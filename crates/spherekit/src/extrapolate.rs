@@ -18,7 +18,7 @@ use crate::math;
 /// |---|---|---|---|
 /// | `Hold` | the end point | zero | zero |
 /// | `Extend` | `exp_p(Δ·v)`: the geodesic from the end point `p` with the end velocity `v` | `v` transported along it (constant speed) | `−|v|²·c`: the normal part only |
-/// | `Cycle` | `c(t0 + (t − t0) mod (t1 − t0))` | of the curve there | of the curve there |
+/// | `Cycle` | `c(t0 + (t − t0) mod (t1 − t0))` (antiperiodic loops: `±`, the sign of the lap) | of the curve there | of the curve there |
 /// | `Segment` | the end piece's own formula continued ([`Curve::jet_beyond`]) | of that formula | of that formula |
 /// | `Error` | — | — | — |
 ///
@@ -29,7 +29,9 @@ use crate::math;
 /// (left at `t1`, right at `t0`); an end at rest stays at the end point.
 ///
 /// `Cycle` repeats `[t0, t1)` with period `t1 − t0` (meaningful for closed curves, where it is
-/// continuous); at the parameters `t1 + k·(t1 − t0)` the right-sided jet is the curve's jet at
+/// continuous); a loop that ends at the antipode of its start ([`Curve::is_antiperiodic`], a
+/// loop of rotations of an odd number of full turns) continues antiperiodically,
+/// `c(t + T) = −c(t)`, the same rotations. At the parameters `t1 + k·(t1 − t0)` the right-sided jet is the curve's jet at
 /// `t0` and the left-sided one the curve's left jet at `t1`.
 ///
 /// `Segment` continues the first/last segment's polynomial in the tangent space, as scipy's
@@ -238,18 +240,32 @@ impl<C: Curve> Extrapolated<C> {
         let [t0, t1] = self.curve.domain();
         let period = t1 - t0;
         let r = (t - t0).rem_euclid(period);
+        // The whole periods before `t` (the lap `t` is on), for the sign of an antiperiodic
+        // curve: exact for any lap count below 2⁵³.
+        let mut laps = ((t - t0 - r) / period).round();
         // `r ∈ [0, period]` (rounding can give `period` itself); a whole number of periods is
-        // the start from the right and the end from the left.
+        // the start from the right and the end from the left (of the lap before).
         let at_boundary = r == 0.0 || r >= period;
+        if r >= period {
+            laps += 1.0;
+        }
         let tau = if at_boundary {
             match side {
                 Side::Right => t0,
-                Side::Left => t1,
+                Side::Left => {
+                    laps -= 1.0;
+                    t1
+                }
             }
         } else {
             (t0 + r).min(t1)
         };
-        self.curve.jet_at(tau, side)
+        let jet = self.curve.jet_at(tau, side);
+        if self.curve.is_antiperiodic() && laps.rem_euclid(2.0) == 1.0 {
+            jet.antipode()
+        } else {
+            jet
+        }
     }
 }
 
@@ -266,6 +282,10 @@ impl<C: Curve> Curve for Extrapolated<C> {
 
     fn is_closed(&self) -> bool {
         self.curve.is_closed()
+    }
+
+    fn is_antiperiodic(&self) -> bool {
+        self.curve.is_antiperiodic()
     }
 
     fn jet_at(&self, t: f64, side: Side) -> Jet<C::Point> {

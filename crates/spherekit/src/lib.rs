@@ -134,6 +134,7 @@ pub mod quaternion;
 #[cfg(any(test, target_arch = "wasm32"))]
 mod recast;
 mod rotation;
+mod rotation_loop;
 mod s2;
 mod s3;
 mod section;
@@ -169,6 +170,7 @@ pub use rotation::{
     ROTATION_TOLERANCE, RotationError, exp_so3, rodrigues_compose, rotation_derivative,
     rotation_matrix_from_rodrigues, skew,
 };
+pub use rotation_loop::RotationLoop;
 pub use s2::S2Point;
 pub use s3::{
     UnitQuat, angular_velocity_acceleration, angular_velocity_acceleration_body, unflip,

@@ -28,5 +28,6 @@ mod pobegailo_misprints;
 mod pobegailo_s2;
 mod pobegailo_s3;
 mod rotation;
+mod rotation_loop;
 mod source_claims;
 mod squad;
