@@ -9,6 +9,8 @@ batches with the interpreter lock released.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from . import _spherekit
@@ -20,7 +22,8 @@ except ImportError:  # pragma: no cover - exercised only without scipy
 
 
 def _quats(rotations, who):
-    """The keys as an (n, 4) scalar-last array, with scipy's messages for the bad shapes."""
+    """The keys as an (n, 4) array (scalar last from a ``Rotation``, else as given) and whether
+    they came as an array, with scipy's messages for the bad shapes."""
     if hasattr(rotations, "as_quat") and hasattr(rotations, "single"):
         if rotations.single:
             raise ValueError(
@@ -29,10 +32,12 @@ def _quats(rotations, who):
                 else "`rotations` must be a sequence of rotations."
             )
         q = np.asarray(rotations.as_quat(), dtype=float)
+        array = False
     else:
         if who == "Slerp" and _Rotation is not None and not isinstance(rotations, np.ndarray):
             raise TypeError("`rotations` must be a `Rotation` instance.")
         q = np.asarray(rotations, dtype=float)
+        array = True
         if q.ndim == 1:
             raise ValueError(
                 "`rotations` must be a sequence of at least 2 rotations."
@@ -43,11 +48,26 @@ def _quats(rotations, who):
         raise ValueError("Rotations with more than 1 leading dimension are not supported.")
     if q.shape[-1] != 4:
         raise ValueError(f"Expected `rotations` as quaternions of shape (n, 4), got {q.shape}.")
-    return q
+    return q, array
+
+
+def _as_given(rotations, q, array):
+    """The keys to keep for pickling: a ``Rotation`` as it is (it pickles), an array copied (the
+    caller may change theirs)."""
+    return q.copy() if array else rotations
+
+
+def _key_rotations(kept, array, scalar_first):
+    """The keys as scipy keeps them, from what ``_as_given`` kept: the ``Rotation`` given, or
+    one made from the quaternion array (the array itself without scipy)."""
+    if not array or _Rotation is None:
+        return kept
+    return _Rotation.from_quat(kept, scalar_first=scalar_first)
 
 
 def _rotations(q):
-    """Scalar-last quaternions as a scipy ``Rotation`` when scipy is importable.
+    """Quaternions (scalar last when scipy is importable) as a scipy ``Rotation``, or as they are
+    without scipy.
 
     The spline's quaternions are unit to rounding, so scipy's normalisation (most of the cost
     of ``Rotation.from_quat`` on large batches) is skipped where scipy's constructor offers it
@@ -65,11 +85,19 @@ class RotationSpline:
     """Interpolates rotations with continuous angular rate and acceleration.
 
     A drop-in for ``scipy.spatial.transform.RotationSpline``: the same constructor (a scipy
-    ``Rotation``, or an ``(n, 4)`` scalar-last quaternion array), the same call
-    ``spline(times, order=0|1|2)`` returning a ``Rotation`` (an ``(m, 4)`` array without
-    scipy), the body-frame angular rate, or the body-frame angular acceleration; the same
-    ``ValueError`` messages. Outside the key times the end segments' cubics are extrapolated,
-    as scipy does (a closed spline is periodic instead).
+    ``Rotation``, or an ``(n, 4)`` quaternion array, scalar last ``[x, y, z, w]`` or scalar
+    first with ``scalar_first=True`` as scipy's ``Rotation.from_quat``), the same call
+    ``spline(times, order=0|1|2)`` returning a ``Rotation`` (an ``(m, 4)`` array in the order
+    of ``scalar_first`` without scipy), the body-frame angular rate, or the body-frame angular
+    acceleration; the same ``ValueError`` messages, and the attributes ``times`` and
+    ``rotations`` (the keys as given, a ``Rotation``). Outside the key times the end segments'
+    cubics are extrapolated, as scipy does (a closed spline is periodic instead). A NaN time
+    is a ``ValueError``.
+
+    The quaternions are scipy's, sign included: the key as given at each key time, composed
+    with the rotation from it between and outside the key times. The curve does not depend on
+    the keys' signs (``q`` and ``-q`` are the same key). A spline pickles and deep-copies
+    (rebuilt from its arguments: the same values, bit for bit).
 
     The curve is the Rust ``CubicSpline`` on S3, which is scipy's construction solved to a
     relative residual of 1e-14 (it agrees with scipy to about 1e-11).
@@ -82,7 +110,7 @@ class RotationSpline:
       ``start_rate`` and ``end_rate`` at the first and last key);
     - ``closed=True``: a C2 loop through the keys; ``times`` then has one more entry than
       ``rotations``, the time at which the spline is back at the first key (no ends: ``end``
-      must be left out or ``"natural"``).
+      must be left out or ``"natural"``). Its quaternions repeat with the period.
 
     >>> import numpy as np
     >>> from spherekit import RotationSpline
@@ -95,10 +123,15 @@ class RotationSpline:
     >>> import scipy.spatial.transform as sst
     >>> bool(np.allclose(rate, sst.RotationSpline([0, 1, 2, 4], keys)([0.5, 3.0], 1), atol=1e-10))
     True
+    >>> import pickle
+    >>> bool((pickle.loads(pickle.dumps(spline))(3.0).as_quat() == spline(3.0).as_quat()).all())
+    True
     """
 
-    def __init__(self, times, rotations, *, end=None, closed=False, start_rate=None, end_rate=None):
-        q = _quats(rotations, "RotationSpline")
+    def __init__(
+        self, times, rotations, *, end=None, closed=False, start_rate=None, end_rate=None, scalar_first=False
+    ):
+        q, array = _quats(rotations, "RotationSpline")
         if len(q) == 1:
             raise ValueError("`rotations` must contain at least 2 rotations.")
         times = np.asarray(times, dtype=float)
@@ -118,29 +151,61 @@ class RotationSpline:
             )
         if (np.diff(times) <= 0).any():
             raise ValueError("Values in `times` must be in a strictly increasing order.")
-        if end is None:
-            end = "natural" if closed else "scipy"
+        scalar_first = bool(scalar_first)
+        native_end = ("natural" if closed else "scipy") if end is None else end
         self._native = _spherekit._CubicRotations(
-            times, q, end=end, closed=closed, start_rate=start_rate, end_rate=end_rate
+            times,
+            q,
+            end=native_end,
+            closed=closed,
+            start_rate=start_rate,
+            end_rate=end_rate,
+            scalar_first=scalar_first and array,
         )
+        self._args = (
+            times.copy(),
+            _as_given(rotations, q, array),
+            dict(end=end, closed=closed, start_rate=start_rate, end_rate=end_rate, scalar_first=scalar_first),
+        )
+        self._array_keys = array
+        self._scalar_first = scalar_first
         self.times = times
-        self.rotations = rotations if not isinstance(rotations, np.ndarray) or _Rotation is None else _Rotation.from_quat(q)
+
+    @functools.cached_property
+    def rotations(self):
+        """The keys as given: the ``Rotation`` (one made from the quaternion array; the array
+        without scipy)."""
+        return _key_rotations(self._args[1], self._array_keys, self._scalar_first)
 
     def __call__(self, times, order=0):
         """The interpolated rotations (``order=0``), body-frame angular rates (1, rad per time
-        unit) or angular accelerations (2) at ``times`` (a number or a 1-D array)."""
-        out = self._native(times, order)
+        unit) or angular accelerations (2) at ``times`` (a number or a 1-D array; NaN is a
+        ``ValueError``)."""
+        out = self._native(times, order, scalar_first=self._scalar_first and _Rotation is None)
         return _rotations(out) if order == 0 else out
+
+    def __getstate__(self):
+        return self._args
+
+    def __setstate__(self, state):
+        times, rotations, kwargs = state
+        self.__init__(times, rotations, **kwargs)
 
 
 class Slerp:
     """Spherical linear interpolation of rotations.
 
     A drop-in for ``scipy.spatial.transform.Slerp``: the same constructor (a scipy
-    ``Rotation``; an ``(n, 4)`` scalar-last quaternion array is accepted too), the same call
-    returning a ``Rotation`` (an ``(m, 4)`` array without scipy) and the same errors, including
-    the ``ValueError`` for times outside the key times. Consecutive keys are joined by the
-    shortest rotation, as in scipy. The curve is the Rust ``GeodesicSpline`` on S3.
+    ``Rotation``; an ``(n, 4)`` quaternion array is accepted too, scalar last ``[x, y, z, w]``
+    or scalar first with ``scalar_first=True``), the same call returning a ``Rotation`` (an
+    ``(m, 4)`` array in the order of ``scalar_first`` without scipy), the same errors,
+    including the ``ValueError`` for times outside the key times (NaN included), and scipy's
+    attributes ``times``, ``timedelta``, ``rotations`` (the keys but the last, as scipy keeps
+    them) and ``rotvecs`` (the rotation vectors between consecutive keys). Consecutive keys are
+    joined by the shortest rotation, as in scipy. The curve is the Rust ``GeodesicSpline`` on
+    S3; its quaternions are scipy's, sign included (the key starting the segment composed with
+    the rotation from it; at a key time, the segment ending there). A ``Slerp`` pickles and
+    deep-copies (rebuilt from its arguments: the same values, bit for bit).
 
     >>> from spherekit import Slerp
     >>> from scipy.spatial.transform import Rotation
@@ -153,8 +218,8 @@ class Slerp:
     ValueError: Interpolation times must be within the range [0.0, 2.0], both inclusive.
     """
 
-    def __init__(self, times, rotations):
-        q = _quats(rotations, "Slerp")
+    def __init__(self, times, rotations, *, scalar_first=False):
+        q, array = _quats(rotations, "Slerp")
         if len(q) <= 1:
             raise ValueError("`rotations` must be a sequence of at least 2 rotations.")
         times = np.asarray(times, dtype=float)
@@ -171,11 +236,40 @@ class Slerp:
         timedelta = np.diff(times)
         if (timedelta <= 0).any():
             raise ValueError("Times must be in strictly increasing order.")
-        self._native = _spherekit._SlerpRotations(times, q)
+        scalar_first = bool(scalar_first)
+        self._native = _spherekit._SlerpRotations(times, q, scalar_first=scalar_first and array)
+        self._args = (times.copy(), _as_given(rotations, q, array), dict(scalar_first=scalar_first))
+        self._array_keys = array
+        self._scalar_first = scalar_first
         self.times = times
         self.timedelta = timedelta
+
+    @functools.cached_property
+    def _keys(self):
+        return _key_rotations(self._args[1], self._array_keys, self._scalar_first)
+
+    @functools.cached_property
+    def rotations(self):
+        """The keys but the last (as scipy's ``Slerp.rotations``): a ``Rotation`` (an array
+        without scipy)."""
+        return self._keys[:-1]
+
+    @functools.cached_property
+    def rotvecs(self):
+        """The rotation vectors from each key to the next, ``(n - 1, 3)`` (scipy's
+        ``Slerp.rotvecs``; needs scipy)."""
+        if _Rotation is None:  # pragma: no cover - exercised only without scipy
+            raise AttributeError("Slerp.rotvecs needs scipy")
+        return (self._keys[:-1].inv() * self._keys[1:]).as_rotvec()
 
     def __call__(self, times):
         """The interpolated rotations at ``times`` (a number or a 1-D array within the key
         times)."""
-        return _rotations(self._native(times))
+        return _rotations(self._native(times, scalar_first=self._scalar_first and _Rotation is None))
+
+    def __getstate__(self):
+        return self._args
+
+    def __setstate__(self, state):
+        times, rotations, kwargs = state
+        self.__init__(times, rotations, **kwargs)

@@ -170,19 +170,17 @@ def test_rotation_spline_batches_agree_bit_for_bit(rng, monkeypatch, closed):
     times = random_times(rng, 7 if closed else 6)
     native = spherekit.RotationSpline(times, keys, closed=closed)._native
     t = np.linspace(times[0] - 0.5, times[-1] + 0.5, 40_000)
-    t[[3, 20_001, 39_998]] = np.nan
     for order in (0, 1, 2):
         monkeypatch.setenv("SPHEREKIT_THREADS", "1")
         one = native(t, order)
         monkeypatch.setenv("SPHEREKIT_THREADS", "2")
         two = native(t, order)
-        assert np.array_equal(one, two, equal_nan=True)
-        assert np.isnan(one[[3, 20_001, 39_998]]).all() and not np.isnan(one[[2, 4, 39_999]]).any()
+        assert np.array_equal(one, two) and not np.isnan(one).any()
         # Singles inside the key times take the chunk path the big batch's first and last
         # chunks (times outside) do not.
         picks = np.arange(0, len(t), 397)
         singles = np.array([native(t[k], order) for k in picks])
-        assert np.array_equal(one[picks], singles, equal_nan=True)
+        assert np.array_equal(one[picks], singles)
         inside = (t >= times[0]) & (t <= times[-1])
         assert np.array_equal(one[inside], native(t[inside], order))
 

@@ -51,6 +51,22 @@ impl<'py> Times<'py> {
             Err(_) => Cow::Owned(self.array.as_array().iter().copied().collect()),
         }
     }
+
+    /// The parameters as one slice, a `ValueError` naming the first NaN (`t[3]: NaN is not a
+    /// parameter`; `name` and `what` as in the message) rather than rows of NaN.
+    pub(crate) fn values_not_nan(&self, name: &str, what: &str) -> PyResult<Cow<'_, [f64]>> {
+        let ts = self.values();
+        // A fold rather than `any`: no early exit, so the check is vectorised.
+        if ts.iter().fold(false, |nan, t| nan | t.is_nan()) {
+            let at = if self.scalar {
+                String::new()
+            } else {
+                format!("[{}]", ts.iter().position(|t| t.is_nan()).unwrap_or(0))
+            };
+            return Err(value_error(format!("{name}{at}: NaN is not a {what}")));
+        }
+        Ok(ts)
+    }
 }
 
 /// `data` (rows of `width` numbers) as a numpy array: `(rows, width)`, or `(width,)` for a

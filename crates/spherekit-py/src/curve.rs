@@ -3,14 +3,16 @@
 
 //! `spherekit.Curve`: any registered method on any sphere, built through the scene format.
 
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 use serde_json::{Map, Value, json};
 use spherekit::{Curve, Extrapolate, Jet, S2Point, SnPoint, UnitQuat};
 use spherekit_scene::{Built, BuiltCurve, Scene, ScenePoint, continuity_json};
 
 use crate::batch;
 use crate::convert::{Times, from_json, point_rows, rows, to_json, value_error};
+use crate::scene::default_order;
 
 /// What to evaluate at each parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -151,8 +153,10 @@ pub(crate) fn write_jets<P: Flat>(
 ///
 /// - `points`: an `(n, d)` array. The sphere is inferred from `d` (3: S2, 4: S3 quaternions,
 ///   otherwise S(d-1)) unless `space` ("S2", "S3", "S<m>") is given. Quaternions are
-///   scalar-last `[x, y, z, w]` as in scipy, or `[w, x, y, z]` with `scalar_first=True`; the
-///   same order is used for the points, velocities and accelerations returned.
+///   scalar-last `[x, y, z, w]` as scipy's `Rotation.as_quat()`, or `[w, x, y, z]` with
+///   `scalar_first=True` (as scipy's `from_quat(..., scalar_first=True)`); the same order is
+///   used for the points, velocities and accelerations returned and for `points`, `controls`
+///   and `auxiliary` (a dict given to `spherekit.sample` follows the same rule).
 /// - `knots`: the parameter of each point (methods that take knots), strictly increasing.
 /// - `closed`: a closed loop (every method whose `methods()` entry has `closes`): the curve
 ///   returns to its first point, as smooth at the seam as at the other joints; `knots` then has
@@ -164,7 +168,9 @@ pub(crate) fn write_jets<P: Flat>(
 ///
 /// `curve(t)` gives the points at the parameters `t` (a number or a 1-D array), `curve(t, 1)`
 /// and `curve(t, 2)` the first and second derivatives (ambient vectors). Outside `domain` the
-/// `extrapolate` policy applies (by default the end point at rest); NaN gives NaN.
+/// `extrapolate` policy applies (by default the end point at rest); a NaN parameter is a
+/// `ValueError`. A curve pickles and deep-copies (rebuilt from its arguments: the same
+/// samples, bit for bit).
 ///
 /// ```python
 /// >>> import numpy as np, spherekit
@@ -186,6 +192,23 @@ pub(crate) struct PyCurve {
     space: String,
     width: usize,
     scalar_first: bool,
+    /// The constructor's arguments, for pickling.
+    args: Args,
+}
+
+/// `Curve`'s arguments as given (the points before normalising or reordering, the parameters
+/// as JSON).
+struct Args {
+    method: String,
+    points: Vec<Vec<f64>>,
+    space: Option<String>,
+    knots: Option<Vec<f64>>,
+    closed: bool,
+    scalar_first: bool,
+    canonicalize: Option<bool>,
+    parametrization: Option<String>,
+    extrapolate: Option<String>,
+    params: Option<Value>,
 }
 
 /// Calls `f` with the `Built` of whatever sphere the curve is on.
@@ -222,18 +245,13 @@ impl PyCurve {
         what: What,
     ) -> PyResult<Bound<'py, PyAny>> {
         let times = Times::extract(t, "t")?;
-        let ts = times.values();
+        let ts = times.values_not_nan("t", "parameter")?;
         if self.scene.curves[0].extrapolate == Extrapolate::Error {
-            // The scene format's check (NaN still gives NaN rows).
+            // The scene format's check.
             let mut scene = self.scene.clone();
-            let t0 = self.built.domain()[0];
-            let checked: Vec<f64> = ts
-                .iter()
-                .map(|&t| if t.is_nan() { t0 } else { t })
-                .collect();
-            if !checked.is_empty() {
+            if !ts.is_empty() {
                 scene
-                    .set_parameters(checked)
+                    .set_parameters(ts.to_vec())
                     .and_then(|()| scene.check_parameters(core::slice::from_ref(&self.built)))
                     .map_err(|e| value_error(e.to_string()))?;
             }
@@ -296,8 +314,9 @@ impl PyCurve {
         extrapolate: Option<&str>,
         params: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
-        let mut rows = point_rows(points, "points")?;
+        let rows = point_rows(points, "points")?;
         let width = rows.first().map_or(0, Vec::len);
+        let given_space = space;
         let space = match space {
             Some(s) => s.to_owned(),
             None => match width {
@@ -306,20 +325,33 @@ impl PyCurve {
                 d => format!("S{}", d - 1),
             },
         };
-        // The scene format's quaternions are [w, x, y, z].
-        if space == "S3" && !scalar_first {
-            for r in &mut rows {
-                if let &mut [x, y, z, w] = r.as_mut_slice() {
-                    *r = vec![w, x, y, z];
-                }
-            }
-        }
+        let knots = knots
+            .map(|k| crate::convert::numbers(k, "knots"))
+            .transpose()?;
+        let params = match params {
+            Some(p) if !p.is_empty() => Some(to_json(p.as_any(), 0)?),
+            _ => None,
+        };
+        let args = Args {
+            method: method.to_owned(),
+            points: rows,
+            space: given_space.map(str::to_owned),
+            knots,
+            closed,
+            scalar_first,
+            canonicalize,
+            parametrization: parametrization.map(str::to_owned),
+            extrapolate: extrapolate.map(str::to_owned),
+            params,
+        };
         let mut scene = Map::new();
         scene.insert("space".into(), json!(space));
         scene.insert("method".into(), json!(method));
-        scene.insert("points".into(), json!(rows));
-        if let Some(k) = knots {
-            scene.insert("knots".into(), json!(crate::convert::numbers(k, "knots")?));
+        scene.insert("points".into(), json!(args.points));
+        // Quaternions as given: `[x, y, z, w]`, or `[w, x, y, z]` with `scalar_first`.
+        default_order(&mut scene, scalar_first);
+        if let Some(k) = &args.knots {
+            scene.insert("knots".into(), json!(k));
         }
         if closed {
             scene.insert("closed".into(), json!(true));
@@ -333,10 +365,8 @@ impl PyCurve {
         if let Some(e) = extrapolate {
             scene.insert("extrapolate".into(), json!(e));
         }
-        if let Some(p) = params
-            && !p.is_empty()
-        {
-            scene.insert("params".into(), to_json(p.as_any(), 0)?);
+        if let Some(p) = &args.params {
+            scene.insert("params".into(), p.clone());
         }
         let text = Value::Object(scene).to_string();
         let scene = Scene::from_json(&text).map_err(|e| value_error(e.to_string()))?;
@@ -351,7 +381,32 @@ impl PyCurve {
             scene,
             width,
             scalar_first,
+            args,
         })
+    }
+
+    /// The constructor's arguments, `((method, points), keywords)`: what `pickle` and
+    /// `copy.deepcopy` rebuild the curve from (the same construction, the same bits).
+    fn __getnewargs_ex__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
+        let a = &self.args;
+        let width = a.points.first().map_or(0, Vec::len);
+        let flat: Vec<f64> = a.points.iter().flatten().copied().collect();
+        let points = PyArray1::from_vec(py, flat).reshape([a.points.len(), width])?;
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("space", &a.space)?;
+        kwargs.set_item("knots", &a.knots)?;
+        kwargs.set_item("closed", a.closed)?;
+        kwargs.set_item("scalar_first", a.scalar_first)?;
+        kwargs.set_item("canonicalize", a.canonicalize)?;
+        kwargs.set_item("parametrization", &a.parametrization)?;
+        kwargs.set_item("extrapolate", &a.extrapolate)?;
+        if let Some(params) = &a.params {
+            kwargs.update(from_json(py, params)?.cast::<PyDict>()?.as_mapping())?;
+        }
+        Ok(((a.method.as_str(), points).into_pyobject(py)?, kwargs))
     }
 
     /// The points (`order=0`), velocities (1) or accelerations (2) at the parameters `t`.

@@ -26,19 +26,25 @@ use spherekit::{
 
 use crate::batch;
 use crate::convert::{Times, float_repr, numbers, point_array, rows, value_error};
-use crate::curve::{What, evaluate, write_jets};
+use crate::curve::{Flat, What, evaluate, write_jets};
 
-/// The keys as unit quaternions from scalar-last rows, canonicalised (shortest rotations).
+/// The keys as unit quaternions from rows `[x, y, z, w]` (`[w, x, y, z]` with `scalar_first`),
+/// canonicalised (shortest rotations, [`unflip`]), and which of them [`unflip`] negated.
 ///
 /// The numbers are read as one slice (numpy's own buffer when it is contiguous): the loop over
 /// `ndarray` rows calling `UnitQuat::try_new` took 54 µs for 1 000 keys where this one takes
 /// 15 µs (measured in the Python process, 2026-12-02).
-fn keys(quats: &Bound<'_, PyAny>) -> PyResult<Vec<UnitQuat>> {
+fn keys(quats: &Bound<'_, PyAny>, scalar_first: bool) -> PyResult<(Vec<UnitQuat>, Signs)> {
     let array = point_array(quats, "rotations")?;
     let rows = array.as_array();
     if rows.nrows() > 0 && rows.ncols() != 4 {
+        let order = if scalar_first {
+            "w, x, y, z"
+        } else {
+            "x, y, z, w"
+        };
         return Err(value_error(format!(
-            "rotations: expected quaternions of 4 numbers [x, y, z, w], got {} numbers",
+            "rotations: expected quaternions of 4 numbers [{order}], got {} numbers",
             rows.ncols()
         )));
     }
@@ -50,12 +56,102 @@ fn keys(quats: &Bound<'_, PyAny>) -> PyResult<Vec<UnitQuat>> {
     };
     let mut keys = Vec::with_capacity(rows.nrows());
     for (i, q) in numbers.chunks_exact(4).enumerate() {
-        let q = UnitQuat::try_new(DQuat::from_xyzw(q[0], q[1], q[2], q[3]))
-            .map_err(|e| value_error(format!("rotations[{i}]: {e}")))?;
+        let q = if scalar_first {
+            DQuat::from_xyzw(q[1], q[2], q[3], q[0])
+        } else {
+            DQuat::from_xyzw(q[0], q[1], q[2], q[3])
+        };
+        let q = UnitQuat::try_new(q).map_err(|e| value_error(format!("rotations[{i}]: {e}")))?;
         keys.push(q);
     }
+    let given = keys.clone();
     unflip(&mut keys);
-    Ok(keys)
+    let signs = Signs::new(&given, &keys);
+    Ok((keys, signs))
+}
+
+/// The sign scipy's quaternions have relative to the curve's: which keys [`unflip`] negated.
+///
+/// scipy's `RotationSpline` and `Slerp` write the rotation at `t` as the key `rᵢ` *as given*
+/// times the quaternion of a rotation vector, `rᵢ·exp(vᵢ(t)/2)` (`from_rotvec`, no
+/// canonicalisation: its scalar part is `cos(|vᵢ|/2)`, negative beyond half a turn), with `i`
+/// the segment scipy picks for `t`. The curve is built on the canonicalised keys `kᵢ = ±rᵢ`
+/// and is continuous, so on segment `i` it is the continuous lift `kᵢ·exp(vᵢ(t)/2)` of the
+/// same rotations: scipy's quaternion is the curve's times the sign of `kᵢ` against `rᵢ`. The
+/// choice is per segment, `O(1)` per sample for sorted times (the segment search starts from
+/// the previous sample's), and nothing at all when no key was negated.
+pub(crate) struct Signs {
+    /// `negated[i]`: key `i` as given is `−kᵢ`; `None` when no key is.
+    negated: Option<Vec<bool>>,
+}
+
+impl Signs {
+    fn new(given: &[UnitQuat], canonical: &[UnitQuat]) -> Self {
+        let negated: Vec<bool> = given
+            .iter()
+            .zip(canonical)
+            .map(|(g, k)| g.as_dquat().dot(k.as_dquat()) < 0.0)
+            .collect();
+        Self {
+            negated: negated.contains(&true).then_some(negated),
+        }
+    }
+
+    /// Negates the quaternion rows (`rows`, 4 numbers each) at the parameters `ts` whose
+    /// segment of `knots` starts at a negated key. `right`: the segment of a knot is the one
+    /// it starts (scipy's `RotationSpline`, `searchsorted(side="right") − 1`), else the one it
+    /// ends (scipy's `Slerp`, `side="left"`); before the first knot the first segment, after
+    /// the last one the last.
+    fn apply(&self, knots: &[f64], ts: &[f64], right: bool, rows: &mut [f64]) {
+        let Some(negated) = &self.negated else {
+            return;
+        };
+        let mut hint = 0;
+        for (&t, row) in ts.iter().zip(rows.chunks_exact_mut(4)) {
+            let i = segment(knots, t, right, &mut hint);
+            if negated[i] {
+                row.iter_mut().for_each(|x| *x = -*x);
+            }
+        }
+    }
+}
+
+/// The segment `i` (between `knots[i]` and `knots[i + 1]`) of `t` for [`Signs::apply`],
+/// clamped to the segments there are; `hint` is the previous answer, tried first together with
+/// the segment after it.
+fn segment(knots: &[f64], t: f64, right: bool, hint: &mut usize) -> usize {
+    let before = |k: f64| if right { k <= t } else { k < t };
+    let last = knots.len().saturating_sub(2);
+    let holds = |i: usize| (i == 0 || before(knots[i])) && (i == last || !before(knots[i + 1]));
+    let h = (*hint).min(last);
+    let i = if holds(h) {
+        h
+    } else if h < last && holds(h + 1) {
+        h + 1
+    } else {
+        knots
+            .partition_point(|&k| before(k))
+            .saturating_sub(1)
+            .min(last)
+    };
+    *hint = i;
+    i
+}
+
+/// `t` taken into the period `[t0, t1)` as [`Extrapolate::Cycle`] takes it (the same
+/// arithmetic, so the same bits); a time inside the domain as it is (`t1` too), and `±∞` as it
+/// is (no period: the curve clamps it).
+fn into_period(t: f64, t0: f64, t1: f64) -> f64 {
+    if (t0..=t1).contains(&t) || !t.is_finite() {
+        return t;
+    }
+    let period = t1 - t0;
+    let r = (t - t0).rem_euclid(period);
+    if r == 0.0 || r >= period {
+        t0
+    } else {
+        (t0 + r).min(t1)
+    }
 }
 
 /// A body-frame angular rate `[x, y, z]`.
@@ -75,6 +171,8 @@ fn rate(v: Option<Vec<f64>>, name: &str) -> PyResult<Option<spherekit::glam::DVe
 pub(crate) struct PyCubicRotations {
     /// The spline, continuing its end segments outside the key times (closed: periodic).
     curve: Extrapolated<CubicSpline<UnitQuat>>,
+    /// scipy's signs of the quaternions written.
+    signs: Signs,
 }
 
 /// `order` of scipy's `RotationSpline.__call__`: quaternions, body rates, body accelerations.
@@ -88,6 +186,34 @@ fn what(order: i64) -> PyResult<What> {
 }
 
 impl PyCubicRotations {
+    /// The quaternions at `ts`, with scipy's signs: the key as given at each key time, the
+    /// segment's key composed with the rotation from it (see [`Signs`]) between and outside
+    /// them. A closed spline's quaternions are periodic: `t` is taken into `[t₀, t_n)` first
+    /// (as [`Extrapolate::Cycle`] does, the same bits) and its segment found there.
+    fn quaternions(&self, ts: &[f64], scalar_first: bool) -> Vec<f64> {
+        let spline = self.curve.curve();
+        let knots = spline.knots();
+        let [t0, t1] = spline.domain();
+        let closed = spline.closed();
+        batch::split(ts, 4, |ts, out| {
+            let mut taken = Vec::new();
+            batch::by_chunks(ts, out, 4, t0, spline.eval(t0), |chunk, ps, rows| {
+                let chunk = if closed {
+                    taken.clear();
+                    taken.extend(chunk.iter().map(|&t| into_period(t, t0, t1)));
+                    taken.as_slice()
+                } else {
+                    chunk
+                };
+                self.curve.eval_many(chunk, ps);
+                for (p, row) in ps.iter().zip(rows.chunks_exact_mut(4)) {
+                    p.write_point(scalar_first, row);
+                }
+                self.signs.apply(knots, chunk, true, rows);
+            });
+        })
+    }
+
     /// The body-frame angular rates `2·q̄·q′` at `ts`, from the point and velocity alone
     /// ([`CubicSpline::point_velocity_many`]: the jet's bits without its acceleration). A
     /// chunk with a parameter outside the key times goes through the extrapolation's jets.
@@ -140,7 +266,8 @@ impl PyCubicRotations {
 #[pymethods]
 impl PyCubicRotations {
     #[new]
-    #[pyo3(signature = (times, quats, end="scipy", closed=false, start_rate=None, end_rate=None))]
+    #[pyo3(signature = (times, quats, end="scipy", closed=false, start_rate=None, end_rate=None, scalar_first=false))]
+    #[expect(clippy::too_many_arguments, reason = "the Python signature")]
     fn new(
         py: Python<'_>,
         times: &Bound<'_, PyAny>,
@@ -149,9 +276,10 @@ impl PyCubicRotations {
         closed: bool,
         start_rate: Option<&Bound<'_, PyAny>>,
         end_rate: Option<&Bound<'_, PyAny>>,
+        scalar_first: bool,
     ) -> PyResult<Self> {
         let times = numbers(times, "times")?;
-        let keys = keys(quats)?;
+        let (keys, signs) = keys(quats, scalar_first)?;
         let start_rate = rate(
             start_rate.map(|r| numbers(r, "start_rate")).transpose()?,
             "start_rate",
@@ -198,24 +326,27 @@ impl PyCubicRotations {
         };
         Ok(Self {
             curve: Extrapolated::new(spline, policy),
+            signs,
         })
     }
 
-    /// Quaternions `[x, y, z, w]` (`order=0`), body angular rates (1) or accelerations (2).
-    #[pyo3(signature = (t, order=0))]
+    /// Quaternions `[x, y, z, w]` (`[w, x, y, z]` with `scalar_first`; `order=0`) with scipy's
+    /// signs, body angular rates (1) or accelerations (2). A NaN time is a `ValueError`.
+    #[pyo3(signature = (t, order=0, scalar_first=false))]
     fn __call__<'py>(
         &self,
         py: Python<'py>,
         t: &Bound<'py, PyAny>,
         order: i64,
+        scalar_first: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
         let what = what(order)?;
         let times = Times::extract(t, "times")?;
-        let ts = times.values();
+        let ts = times.values_not_nan("times", "time")?;
         let (data, width) = py.detach(|| match what {
             What::AngularVelocity(_) => (self.body_rates(&ts), 3),
             What::AngularAcceleration(_) => (self.body_accelerations(&ts), 3),
-            _ => (evaluate(&self.curve, &ts, What::Point, 4, false), 4),
+            _ => (self.quaternions(&ts, scalar_first), 4),
         });
         rows(py, data, width, times.scalar)
     }
@@ -232,8 +363,12 @@ impl PyCubicRotations {
         let what = what(order)?;
         let width = if what == What::Point { 4 } else { 3 };
         let mut out = vec![f64::NAN; width];
-        if let Some(jet) = self.curve.curve().continued_jet(t) {
+        let spline = self.curve.curve();
+        if let Some(jet) = spline.continued_jet(t) {
             write_jets(&[jet], what, false, width, &mut out);
+            if what == What::Point {
+                self.signs.apply(spline.knots(), &[t], true, &mut out);
+            }
         }
         rows(py, out, width, true)
     }
@@ -263,22 +398,38 @@ impl PyCubicRotations {
 #[pyclass(module = "spherekit._spherekit", name = "_SlerpRotations", frozen)]
 pub(crate) struct PySlerpRotations {
     spline: GeodesicSpline<UnitQuat>,
+    /// scipy's signs of the quaternions written.
+    signs: Signs,
 }
 
 #[pymethods]
 impl PySlerpRotations {
     #[new]
-    fn new(py: Python<'_>, times: &Bound<'_, PyAny>, quats: &Bound<'_, PyAny>) -> PyResult<Self> {
+    #[pyo3(signature = (times, quats, scalar_first=false))]
+    fn new(
+        py: Python<'_>,
+        times: &Bound<'_, PyAny>,
+        quats: &Bound<'_, PyAny>,
+        scalar_first: bool,
+    ) -> PyResult<Self> {
         let times = numbers(times, "times")?;
-        let keys = keys(quats)?;
+        let (keys, signs) = keys(quats, scalar_first)?;
         let spline = py
             .detach(|| GeodesicSpline::try_new(keys, Some(times)))
             .map_err(|e| value_error(e.to_string()))?;
-        Ok(Self { spline })
+        Ok(Self { spline, signs })
     }
 
-    /// Quaternions `[x, y, z, w]` at `t`; a `ValueError` (scipy's message) outside the times.
-    fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    /// Quaternions `[x, y, z, w]` (`[w, x, y, z]` with `scalar_first`) at `t` with scipy's
+    /// signs (the key as given composed with the rotation from it, the segment ending at a key
+    /// time); a `ValueError` (scipy's message) outside the times, NaN included.
+    #[pyo3(signature = (t, scalar_first=false))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        scalar_first: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
         let times = Times::extract(t, "times")?;
         let ts = times.values();
         let [t0, t1] = self.spline.domain();
@@ -289,7 +440,11 @@ impl PySlerpRotations {
                 float_repr(py, t1)
             )));
         }
-        let data = py.detach(|| evaluate(&self.spline, &ts, What::Point, 4, false));
+        let data = py.detach(|| {
+            let mut data = evaluate(&self.spline, &ts, What::Point, 4, scalar_first);
+            self.signs.apply(self.spline.knots(), &ts, false, &mut data);
+            data
+        });
         rows(py, data, 4, times.scalar)
     }
 }
