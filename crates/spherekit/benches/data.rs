@@ -37,7 +37,7 @@ pub(crate) fn keys_s3(count: usize) -> Vec<UnitQuat> {
         let angle = 0.4 + 0.8 * rng.next_f64();
         let last = out[out.len() - 1];
         let q = UnitQuat::from_axis_angle(axis, angle).expect("unit axis");
-        out.push(q.mul(last));
+        out.push(q * last);
     }
     out
 }

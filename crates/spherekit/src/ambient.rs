@@ -121,6 +121,11 @@ impl Ambient for DVec4 {
 }
 
 /// A vector of ℝⁿ whose dimension is chosen at run time: the ambient space of [`SnPoint`](crate::SnPoint).
+///
+/// Vectors of different lengths combine as if the shorter one were padded with zeros (ℝᵐ ⊂ ℝⁿ
+/// as the first m coordinates): a sum or difference has the longer length, and the dot product
+/// runs over the common coordinates. So points of spheres of different dimensions (S^m ⊂ S^n)
+/// have a distance, a logarithm and a geodesic, and no operation panics on a mismatch.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct VecN(Vec<f64>);
 
@@ -137,10 +142,18 @@ impl VecN {
         &self.0
     }
 
+    /// `f` coordinate by coordinate, the shorter vector padded with zeros.
+    #[inline]
     fn zip_with(mut self, other: &Self, f: impl Fn(f64, f64) -> f64) -> Self {
-        debug_assert_eq!(self.0.len(), other.0.len(), "dimension mismatch");
+        if self.0.len() < other.0.len() {
+            self.0.resize(other.0.len(), 0.0);
+        }
+        let n = other.0.len();
         for (a, b) in self.0.iter_mut().zip(&other.0) {
             *a = f(*a, *b);
+        }
+        for a in self.0.iter_mut().skip(n) {
+            *a = f(*a, 0.0);
         }
         self
     }
@@ -161,7 +174,9 @@ impl Add for VecN {
 
 impl AddAssign for VecN {
     fn add_assign(&mut self, rhs: Self) {
-        debug_assert_eq!(self.0.len(), rhs.0.len(), "dimension mismatch");
+        if self.0.len() < rhs.0.len() {
+            self.0.resize(rhs.0.len(), 0.0);
+        }
         for (a, b) in self.0.iter_mut().zip(rhs.0) {
             *a += b;
         }
@@ -194,7 +209,6 @@ impl Neg for VecN {
 
 impl Ambient for VecN {
     fn dot(&self, other: &Self) -> f64 {
-        debug_assert_eq!(self.0.len(), other.0.len(), "dimension mismatch");
         self.0.iter().zip(&other.0).map(|(a, b)| a * b).sum()
     }
     fn zeros_like(&self) -> Self {

@@ -782,15 +782,15 @@ fn control_points<P: Manifold>(d: &[P], shape: &Shape, closed: bool) -> Result<V
     let mut inner = Vec::with_capacity(2 * n);
     for i in 0..n {
         let next = &d[(i + 1) % m];
-        let a = d[i].try_slerp(next, shape.eta[i]).ok_or(i)?;
-        let b = d[i].try_slerp(next, shape.omega[i]).ok_or(i)?;
+        let a = d[i].try_slerp(next, shape.eta[i]).map_err(|_| i)?;
+        let b = d[i].try_slerp(next, shape.omega[i]).map_err(|_| i)?;
         inner.push([a, b]);
     }
     let junction = |i: usize| {
         let prev = (i + n - 1) % n;
         inner[prev][1]
             .try_slerp(&inner[i][0], shape.delta[i])
-            .ok_or(i)
+            .map_err(|_| i)
     };
     let first = if closed { junction(0)? } else { d[0].clone() };
     let mut out = Vec::with_capacity(3 * n + 1);

@@ -191,7 +191,7 @@ fn pyramid<P: Manifold>(level: &mut [P], s: f64) -> P {
         for i in 0..n {
             let next = level[i]
                 .try_slerp(&level[i + 1], s)
-                .unwrap_or_else(|| level[i].clone());
+                .unwrap_or_else(|_| level[i].clone());
             level[i] = next;
         }
     }

@@ -266,7 +266,7 @@ impl CatmullRom<UnitQuat> {
     /// use spherekit::glam::DVec3;
     ///
     /// // Rotations about one axis: the spline is the scalar Catmull-Rom spline of the angles.
-    /// let q = |a: f64| UnitQuat::exp(DVec3::Z * a);
+    /// let q = |a: f64| UnitQuat::exp_pure(DVec3::Z * a);
     /// let a = [0.0, 0.1, 0.4, 0.6, 0.65];
     /// let c = CatmullRom::try_new_quaternion(a.iter().map(|&x| q(x)).collect(), None).unwrap();
     /// // Segment 0 has Bézier control angles c₀, c₀ + (c₁ − c₋₁)/6, c₁ − (c₂ − c₀)/6, c₁.
@@ -307,15 +307,15 @@ impl CatmullRom<UnitQuat> {
         let logs: Vec<glam::DVec3> = stencil
             .iter()
             .map(|&(_, prev, next, w)| {
-                let mut x = next.mul(prev.conjugate());
+                let mut x = *next * prev.conjugate();
                 if x.scalar() < 0.0 {
-                    x = x.neg();
+                    x = -x;
                 }
-                x.log() * (1.0 / w)
+                x.log_pure() * (1.0 / w)
             })
             .collect();
         Self::assemble(points, keys, knots, closed, |c, k, step| {
-            UnitQuat::exp(logs[k] * step).mul(*c)
+            UnitQuat::exp_pure(logs[k] * step) * *c
         })
     }
 }

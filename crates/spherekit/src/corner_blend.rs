@@ -839,7 +839,7 @@ impl<P: Manifold> Curve for CornerBlend<P> {
 /// use spherekit::{CornerBlendS3, Curve, Manifold, Side, UnitQuat, glam::DVec3};
 ///
 /// let q1 = UnitQuat::from_axis_angle(DVec3::X, core::f64::consts::FRAC_PI_2).unwrap();
-/// let q2 = UnitQuat::from_axis_angle(DVec3::Y, core::f64::consts::FRAC_PI_2).unwrap().mul(q1);
+/// let q2 = UnitQuat::from_axis_angle(DVec3::Y, core::f64::consts::FRAC_PI_2).unwrap() * q1;
 /// let c = CornerBlendS3::try_new(vec![UnitQuat::IDENTITY, q1, q2], 2, 0.25).unwrap();
 /// let k = c.knots().to_vec();
 /// assert!(c.eval(k[3]).dist(&q2) < 1e-15);

@@ -7,11 +7,13 @@
 
 use core::fmt;
 
-/// Why a vector could not be made into a point of a sphere.
+/// Why a point of a sphere could not be formed: from a vector (the constructors), or by an
+/// operation on points (the checked exponentials, powers and geodesic interpolation, the
+/// `try_` methods of [`Manifold`](crate::Manifold) and [`UnitQuat`](crate::UnitQuat)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum PointError {
-    /// A coordinate is NaN or infinite.
+    /// A coordinate of the vector is NaN or infinite.
     NonFinite,
     /// All coordinates are zero (or subnormal), so there is no direction.
     ZeroLength,
@@ -22,6 +24,16 @@ pub enum PointError {
         /// Coordinates given.
         got: usize,
     },
+    /// The angle is NaN or infinite
+    /// ([`UnitQuat::from_axis_angle`](crate::UnitQuat::from_axis_angle)).
+    NonFiniteAngle,
+    /// The parameter (the fraction of a geodesic interpolation, the exponent of a power) is NaN
+    /// or infinite, or so large that the angle it gives overflows `f64`.
+    NonFiniteParameter,
+    /// The two points are antipodal (within
+    /// [`ANTIPODAL_TOLERANCE`](crate::ANTIPODAL_TOLERANCE)): the minimising geodesic between
+    /// them is not unique.
+    Antipodal,
 }
 
 impl PointError {
@@ -45,13 +57,32 @@ impl PointError {
             Self::WrongDimension { expected, got } => {
                 format!("has {got} coordinates, expected {expected}")
             }
+            Self::NonFiniteAngle => "has an angle that is NaN or infinite".into(),
+            Self::NonFiniteParameter => {
+                "has a parameter that is NaN or infinite, or so large that its angle overflows"
+                    .into()
+            }
+            Self::Antipodal => {
+                "is antipodal to the other point: the geodesic between them is not unique".into()
+            }
         }
     }
 }
 
 impl fmt::Display for PointError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "the vector {}", self.predicate())
+        match self {
+            Self::NonFinite | Self::ZeroLength | Self::WrongDimension { .. } => {
+                write!(f, "the vector {}", self.predicate())
+            }
+            Self::NonFiniteAngle => f.write_str("the angle is NaN or infinite"),
+            Self::NonFiniteParameter => f.write_str(
+                "the parameter is NaN or infinite, or so large that the angle it gives overflows",
+            ),
+            Self::Antipodal => {
+                f.write_str("the points are antipodal: the geodesic between them is not unique")
+            }
+        }
     }
 }
 

@@ -363,7 +363,7 @@ impl GammaSpline {
                 debug_assert!(j < l || u == t1, "the seam is at the end");
                 // c = b₃ᵢ₋₄⁻¹ b₃ᵢ₋₃ with b₃ᵢ₋₄ = c_a (the last inner control of the left segment)
                 // and b₃ᵢ₋₃ the joint; c⁻¹ x c is the rotation of x by c̄.
-                let cbar = b[3 * sa + 2].conjugate().mul(b[3 * sa + 3]).conjugate();
+                let cbar = (b[3 * sa + 2].conjugate() * b[3 * sa + 3]).conjugate();
                 let big_l = body_log(b[3 * sa + 2], b[3 * sb + 1]).unwrap_or(DVec3::ZERO);
                 let a = self.omegas[3 * sb + 1]; // log(a_b⁻¹ c_b)
                 let bb = self.omegas[3 * sa + 1]; // log(a_a⁻¹ c_a)
@@ -455,7 +455,7 @@ fn closed_control_vertices(
         let joint = inner[prev]
             .1
             .try_slerp(&inner[k].0, h0 / (h0 + h1))
-            .ok_or_else(|| SplineError::InvalidParameter {
+            .map_err(|_| SplineError::InvalidParameter {
                 name: "gamma",
                 reason: format!(
                     "gives antipodal control vertices around knots[{k}]; change gamma, knots or points"
@@ -526,7 +526,7 @@ fn control_vertices(
         let (h0, h1) = (knots.width(i - 1), knots.width(i));
         b[3 * i] = b[3 * i - 1]
             .try_slerp(&b[3 * i + 1], h0 / (h0 + h1))
-            .ok_or_else(|| SplineError::InvalidParameter {
+            .map_err(|_| SplineError::InvalidParameter {
                 name: "gamma",
                 reason: format!(
                     "gives antipodal control vertices b{} and b{} around knots[{i}]; change gamma, knots or points",

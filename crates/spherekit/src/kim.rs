@@ -634,7 +634,7 @@ mod tests {
     fn body_log_is_accurate_for_close_points() {
         let a = UnitQuat::from_wxyz([0.3, -0.5, 0.7, 0.4]).unwrap();
         let w = DVec3::new(1e-10, -3e-10, 2e-10);
-        let b = a.mul(UnitQuat::exp(w));
+        let b = a * UnitQuat::exp_pure(w);
         let l = body_log(a, b).unwrap();
         assert!((l - w).length() < 1e-6 * w.length(), "{l:?} vs {w:?}");
     }

@@ -13,7 +13,7 @@
 //! // Three orientations; the last one is given with the "wrong" sign.
 //! let q0 = UnitQuat::IDENTITY;
 //! let q1 = UnitQuat::from_axis_angle(DVec3::Z, 1.0).unwrap();
-//! let q2 = UnitQuat::from_axis_angle(DVec3::X, 2.0).unwrap().neg();
+//! let q2 = -UnitQuat::from_axis_angle(DVec3::X, 2.0).unwrap();
 //! let mut keys = vec![q0, q1, q2];
 //! unflip(&mut keys); // explicit double-cover canonicalisation
 //! let curve = GeodesicSpline::try_new(keys, None).unwrap();

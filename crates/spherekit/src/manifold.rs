@@ -25,12 +25,27 @@ pub const ANTIPODAL_TOLERANCE: f64 = 1e-14;
 /// Tangent vectors are ambient vectors orthogonal to their base point. For
 /// [`UnitQuat`](crate::UnitQuat) the ambient space is ℝ⁴ in glam's `x, y, z, w` order; the
 /// quaternion view of the same vectors is given by [`UnitQuat`](crate::UnitQuat)'s own methods.
+/// [`exp`](Manifold::exp) and [`log`](Manifold::log) here are the sphere's exponential map and
+/// its inverse (follow a geodesic from a base point, and back); the quaternion exponential of a
+/// pure quaternion is [`UnitQuat::exp_pure`](crate::UnitQuat::exp_pure).
+///
+/// # Hostile input
+///
+/// Points are finite unit vectors by construction, so every operation on points alone
+/// ([`dist`](Manifold::dist), [`log`](Manifold::log) between two points) is finite. Where a
+/// caller also passes a number or a vector, the `try_` form reports a bad one as a typed
+/// [`PointError`], and the infallible form returns a documented finite value: a NaN or
+/// infinite tangent or parameter is treated as zero (the result is `self`), and antipodal
+/// points give `self` (or the zero tangent). Debug and release builds behave the same.
 ///
 /// # Numerics
 ///
 /// The angle between `p` and `q` is `θ = 2·atan2(|p − q|, |p + q|)`, accurate near 0 and near π.
 /// The unit direction of the geodesic is formed from `q − p` (near 0) or `q + p` (near π), so it
-/// keeps full relative accuracy at both ends. Geodesic interpolation never flips signs.
+/// keeps full relative accuracy at both ends. Geodesic interpolation never flips signs. Large
+/// angles (a long tangent, a parameter far outside `[0, 1]`) are reduced by the sine and cosine
+/// themselves, whose argument reduction is exact, so that a tangent of length 1e300 still
+/// gives the point at the angle 1e300 (as rounded to `f64`) along the great circle.
 pub trait Manifold: Clone + Debug + PartialEq {
     /// The ambient vector type.
     type Vector: Ambient;
@@ -48,7 +63,16 @@ pub trait Manifold: Clone + Debug + PartialEq {
     /// The point as a unit vector of the ambient space.
     fn to_vector(&self) -> Self::Vector;
 
-    /// Wraps a vector that is already unit length (checked in debug builds only).
+    /// Wraps a vector that is already unit length, without normalising it.
+    ///
+    /// This is the unchecked escape hatch for constructions that have just computed a unit
+    /// vector; use [`try_from_vector`](Manifold::try_from_vector) for data.
+    ///
+    /// # Panics
+    ///
+    /// In debug builds, if `v` is not a finite unit vector (to within `1e-12`). Release
+    /// builds do not check, and a point made from a non-unit vector breaks the type's
+    /// guarantees.
     fn from_vector_unchecked(v: Self::Vector) -> Self;
 
     /// Normalises `v` onto the sphere.
@@ -73,68 +97,133 @@ pub trait Manifold: Clone + Debug + PartialEq {
     }
 
     /// The tangent at `self` pointing along the minimising geodesic to `other`, of length
-    /// [`dist`](Manifold::dist); `None` if the points are antipodal.
-    fn try_log(&self, other: &Self) -> Option<Self::Vector> {
-        let (theta, e) = geodesic_frame(&self.to_vector(), &other.to_vector())?;
-        Some(e * theta)
+    /// [`dist`](Manifold::dist): the inverse of [`exp`](Manifold::exp).
+    ///
+    /// # Errors
+    ///
+    /// [`PointError::Antipodal`] if the points are antipodal (within [`ANTIPODAL_TOLERANCE`]).
+    fn try_log(&self, other: &Self) -> Result<Self::Vector, PointError> {
+        let (theta, e) =
+            geodesic_frame(&self.to_vector(), &other.to_vector()).ok_or(PointError::Antipodal)?;
+        Ok(e * theta)
     }
 
-    /// Like [`try_log`](Manifold::try_log); the zero vector for antipodal points.
-    ///
-    /// # Panics
-    ///
-    /// In debug builds, if the points are antipodal.
+    /// Like [`try_log`](Manifold::try_log), but the zero vector for antipodal points.
     fn log(&self, other: &Self) -> Self::Vector {
-        let l = self.try_log(other);
-        debug_assert!(l.is_some(), "log of antipodal points: {self:?}, {other:?}");
-        l.unwrap_or_else(|| self.to_vector().zeros_like())
+        self.try_log(other)
+            .unwrap_or_else(|_| self.to_vector().zeros_like())
     }
 
     /// Follows the geodesic from `self` with initial velocity `v` (tangent at `self`) for unit time:
     /// `cos|v|·p + sin|v|/|v|·v`.
-    fn exp(&self, v: &Self::Vector) -> Self {
+    ///
+    /// The angle `|v|` may be any finite size (it is reduced exactly by the sine and cosine).
+    ///
+    /// # Errors
+    ///
+    /// [`PointError::NonFinite`] if a coordinate of `v` is NaN or infinite.
+    fn try_exp(&self, v: &Self::Vector) -> Result<Self, PointError> {
+        if !v.is_finite() {
+            return Err(PointError::NonFinite);
+        }
         let p = self.to_vector();
         let theta = v.length();
-        let (s, c) = math::sin_cos(theta);
-        let r = p * c + v.clone() * (if theta > 0.0 { s / theta } else { 1.0 });
-        Self::from_vector_unchecked(renormalize(r))
+        let r = if theta.is_finite() {
+            let (s, c) = math::sin_cos(theta);
+            p * c + v.clone() * (if theta > 0.0 { s / theta } else { 1.0 })
+        } else {
+            let (s, c, dir) = sin_cos_direction_huge(v);
+            p * c + dir * s
+        };
+        Ok(Self::from_vector_unchecked(renormalize(r)))
     }
 
-    /// The point at fraction `t` of the minimising geodesic from `self` to `other`; `None` for
-    /// antipodal points. Exact at `t = 0` and `t = 1`; for other `t` outside `[0, 1]` the
-    /// great circle is continued.
-    fn try_slerp(&self, other: &Self, t: f64) -> Option<Self> {
+    /// Like [`try_exp`](Manifold::try_exp), but `self` (the point at `v = 0`) for a tangent
+    /// with a NaN or infinite coordinate.
+    fn exp(&self, v: &Self::Vector) -> Self {
+        self.try_exp(v).unwrap_or_else(|_| self.clone())
+    }
+
+    /// The point at fraction `t` of the minimising geodesic from `self` to `other`. Exact at
+    /// `t = 0` and `t = 1`; for other `t` outside `[0, 1]` the great circle is continued (any
+    /// finite `t·θ` is reduced exactly by the sine and cosine).
+    ///
+    /// # Errors
+    ///
+    /// [`PointError::NonFiniteParameter`] if `t` is NaN or infinite, or `t·θ` overflows;
+    /// [`PointError::Antipodal`] if the points are antipodal (within [`ANTIPODAL_TOLERANCE`]).
+    fn try_slerp(&self, other: &Self, t: f64) -> Result<Self, PointError> {
+        if !t.is_finite() {
+            return Err(PointError::NonFiniteParameter);
+        }
         if t == 0.0 {
-            return Some(self.clone());
+            return Ok(self.clone());
         }
         if t == 1.0 {
-            return Some(other.clone());
+            return Ok(other.clone());
         }
         let p = self.to_vector();
-        let (theta, e) = geodesic_frame(&p, &other.to_vector())?;
-        let (s, c) = math::sin_cos(t * theta);
-        Some(Self::from_vector_unchecked(renormalize(p * c + e * s)))
+        let (theta, e) = geodesic_frame(&p, &other.to_vector()).ok_or(PointError::Antipodal)?;
+        let angle = t * theta;
+        if !angle.is_finite() {
+            return Err(PointError::NonFiniteParameter);
+        }
+        let (s, c) = math::sin_cos(angle);
+        Ok(Self::from_vector_unchecked(renormalize(p * c + e * s)))
     }
 
-    /// Like [`try_slerp`](Manifold::try_slerp); returns `self` for antipodal points.
-    ///
-    /// # Panics
-    ///
-    /// In debug builds, if the points are antipodal.
+    /// Like [`try_slerp`](Manifold::try_slerp), but `self` (the point at `t = 0`) where that
+    /// has no point: for antipodal points, and for a NaN or infinite `t` (or one whose angle
+    /// `t·θ` overflows).
     fn slerp(&self, other: &Self, t: f64) -> Self {
-        let r = self.try_slerp(other, t);
-        debug_assert!(
-            r.is_some(),
-            "slerp of antipodal points: {self:?}, {other:?}"
-        );
-        r.unwrap_or_else(|| self.clone())
+        self.try_slerp(other, t).unwrap_or_else(|_| self.clone())
     }
 
-    /// The component of the ambient vector `v` tangent to the sphere at `self`.
+    /// The component of the ambient vector `v` tangent to the sphere at `self`, `v − (p·v)·p`.
+    ///
+    /// A linear map of `v`: a NaN or infinite coordinate of `v` gives non-finite coordinates
+    /// (so that the caller's own check of its vector still sees it). A finite `v` gives a
+    /// finite result (no NaN from an intermediate overflow), unless the result itself
+    /// overflows `f64`.
     fn project_tangent(&self, v: &Self::Vector) -> Self::Vector {
         let p = self.to_vector();
-        v.clone() - p.clone() * p.dot(v)
+        let project = |v: Self::Vector| v.clone() - p.clone() * p.dot(&v);
+        let r = project(v.clone());
+        if r.is_finite() || !v.is_finite() {
+            r
+        } else {
+            // |p·v| ≤ |v|, so v/16 keeps every intermediate finite; scaling back by 16 can
+            // only overflow to ±∞, never make a NaN.
+            project(v.clone() * (1.0 / 16.0)) * 16.0
+        }
     }
+}
+
+/// `(sin θ, cos θ, v/θ)` for a finite vector `v` whose length `θ` overflows even when computed
+/// by rescaling ([`Ambient::length`]): `v` is halved `k` times until its length `θ/2ᵏ` is
+/// finite, and the sine and cosine are doubled back `k` times. The angle is meaningless to the
+/// last turn at that size (a rounding of `θ` is far more than 2π), but the result is a finite
+/// point of the great circle. Also used below the overflow, where it is exact.
+#[cold]
+pub(crate) fn sin_cos_direction_huge<V: Ambient>(v: &V) -> (f64, f64, V) {
+    let mut w = v.clone();
+    let mut theta = w.length();
+    let mut halvings = 0;
+    while !theta.is_finite() && halvings < 64 {
+        w = w * 0.5;
+        theta = w.length();
+        halvings += 1;
+    }
+    let dir = if theta > 0.0 {
+        w * (1.0 / theta)
+    } else {
+        w.zeros_like()
+    };
+    let (mut s, mut c) = math::sin_cos(theta);
+    for _ in 0..halvings {
+        (s, c) = (2.0 * s * c, (c - s) * (c + s));
+    }
+    (s, c, dir)
 }
 
 /// The angle θ ∈ [0, π) from `p` to `q` and the unit tangent `e` at `p` with

@@ -24,7 +24,8 @@ use core::fmt;
 
 use glam::{DMat3, DQuat, DVec3, DVec4};
 
-use crate::manifold::renormalize;
+use crate::ambient::Ambient;
+use crate::manifold::{normalize, renormalize, sin_cos_direction_huge};
 use crate::math;
 use crate::s3::UnitQuat;
 
@@ -223,7 +224,7 @@ impl UnitQuat {
     /// use spherekit::{UnitQuat, glam::DVec3};
     ///
     /// let q = UnitQuat::from_axis_angle(DVec3::new(0.0, 0.0, -2.0), 0.5).unwrap();
-    /// let (axis, angle) = q.neg().to_axis_angle();
+    /// let (axis, angle) = (-q).to_axis_angle();
     /// assert!((axis + DVec3::Z).length() < 1e-15 && (angle - 0.5).abs() < 1e-15);
     /// // The rotation by −0.5 about z is the rotation by 0.5 about −z.
     /// let (axis, angle) = UnitQuat::from_axis_angle(DVec3::Z, -0.5).unwrap().to_axis_angle();
@@ -265,7 +266,7 @@ impl UnitQuat {
     /// assert!((r - DVec3::new(0.0, 0.0, 2f64.sqrt() - 1.0)).length() < 1e-15);
     /// assert!((UnitQuat::from_rodrigues(r).unwrap().as_dquat() - q.as_dquat()).length() < 1e-15);
     /// // Matrix (corrected (4.12)) and composition (corrected (4.16), r₂ applied first).
-    /// let m = rotation_matrix_from_rodrigues(r);
+    /// let m = rotation_matrix_from_rodrigues(r).unwrap();
     /// assert!(m.abs_diff_eq(q.to_rotation_matrix(), 1e-15));
     /// let r2 = rodrigues_compose(r, r).unwrap(); // two eighth turns = a quarter turn
     /// assert!((r2 - DVec3::Z).length() < 1e-15);
@@ -319,18 +320,14 @@ impl UnitQuat {
     ///
     /// // The book's example of §4.4, corrected: R(e₃, π/4) ↦ (cos π/8, 0, 0, sin π/8).
     /// let q = UnitQuat::from_axis_angle(DVec3::Z, 2.0 * FRAC_PI_8).unwrap();
-    /// let e = q.neg().to_euler_parameters();
+    /// let e = (-q).to_euler_parameters();
     /// assert!((e[0] - FRAC_PI_8.cos()).abs() < 1e-16 && (e[3] - FRAC_PI_8.sin()).abs() < 1e-16);
     /// assert_eq!(UnitQuat::from_euler_parameters(e).unwrap().to_euler_parameters(), e);
     /// assert!(UnitQuat::from_euler_parameters([1.0, 1.0, 0.0, 0.0]).is_err());
     /// ```
     #[must_use]
     pub fn to_euler_parameters(self) -> [f64; 4] {
-        let q = if self.scalar() < 0.0 {
-            self.neg()
-        } else {
-            self
-        };
+        let q = if self.scalar() < 0.0 { -self } else { self };
         q.to_wxyz()
     }
 
@@ -349,7 +346,8 @@ impl UnitQuat {
         if !v.is_finite() {
             return Err(RotationError::NonFinite);
         }
-        let norm = v.length();
+        // Rescaled when the sum of squares overflows, so that the error reports the length.
+        let norm = Ambient::length(&v);
         if (norm - 1.0).abs() > ROTATION_TOLERANCE {
             return Err(RotationError::NotUnit { norm });
         }
@@ -363,16 +361,21 @@ fn check_rotation_matrix(m: &DMat3) -> Result<(), RotationError> {
     if !m.is_finite() {
         return Err(RotationError::NonFinite);
     }
+    // Huge entries overflow RᵀR to ±∞ and ∞ − ∞ = NaN, which `f64::max` would skip: a NaN
+    // counts as an infinite deviation.
     let deviation = (m.transpose() * *m - DMat3::IDENTITY)
         .abs()
         .to_cols_array()
         .iter()
-        .fold(0.0_f64, |a, &b| a.max(b));
-    if deviation.is_nan() || deviation > ROTATION_TOLERANCE {
+        .fold(
+            0.0_f64,
+            |a, &b| if b.is_nan() { f64::INFINITY } else { a.max(b) },
+        );
+    if deviation > ROTATION_TOLERANCE {
         return Err(RotationError::NotOrthogonal { deviation });
     }
     let det = m.determinant();
-    if (det - 1.0).abs() > ROTATION_TOLERANCE {
+    if !((det - 1.0).abs() <= ROTATION_TOLERANCE) {
         return Err(RotationError::NotProper { det });
     }
     Ok(())
@@ -394,10 +397,16 @@ fn check_rotation_matrix(m: &DMat3) -> Result<(), RotationError> {
 ///
 /// This is (3.46) for the non-unit quaternion `1 + r` divided by its norm; for `|r|∞ > 1`
 /// numerator and denominator are scaled by `1/|r|∞²`, so huge `r` (near half turns) give a
-/// finite orthogonal matrix instead of overflowing. A non-finite `r` gives non-finite entries.
+/// finite orthogonal matrix instead of overflowing.
 /// See [`UnitQuat::to_rodrigues`] for an example.
-#[must_use]
-pub fn rotation_matrix_from_rodrigues(r: DVec3) -> DMat3 {
+///
+/// # Errors
+///
+/// [`RotationError::NonFinite`] if a component of `r` is NaN or infinite.
+pub fn rotation_matrix_from_rodrigues(r: DVec3) -> Result<DMat3, RotationError> {
+    if !r.is_finite() {
+        return Err(RotationError::NonFinite);
+    }
     let scale = r.abs().max_element().max(1.0);
     let (w, v) = (1.0 / scale, r / scale);
     let n = w * w + v.length_squared();
@@ -408,7 +417,7 @@ pub fn rotation_matrix_from_rodrigues(r: DVec3) -> DMat3 {
         DVec3::new(v.y, -v.x, 0.0),
     );
     let outer = DMat3::from_cols(v * v.x, v * v.y, v * v.z);
-    (DMat3::from_diagonal(DVec3::splat(diag)) + outer * 2.0 + k * (2.0 * w)) * (1.0 / n)
+    Ok((DMat3::from_diagonal(DVec3::splat(diag)) + outer * 2.0 + k * (2.0 * w)) * (1.0 / n))
 }
 
 /// Composition of Rodrigues parameters (corrected (4.15)/(4.16) of Pobegailo (2019), §4.5;
@@ -464,9 +473,14 @@ pub fn skew(v: DVec3) -> DMat3 {
 /// ```
 ///
 /// from `K^{2k} = (−1)^k (I − n nᵀ)` and `K^{2k+1} = (−1)^k K`. It equals the matrix of the
-/// quaternion `exp(l/2)` ([`UnitQuat::from_rotation_vector`]). The coefficients
-/// `sin φ/φ` and `(1 − cos φ)/φ²` use series near 0, so `l → 0` gives `I + K(l)` smoothly; a
-/// non-finite `l` gives non-finite entries.
+/// quaternion `exp_pure(l/2)` ([`UnitQuat::from_rotation_vector`]). The coefficients
+/// `sin φ/φ` and `(1 − cos φ)/φ²` use series near 0, so `l → 0` gives `I + K(l)` smoothly.
+/// Every finite `l` is a rotation: the angle is reduced modulo 2π exactly by the sine and
+/// cosine (a `|l|` whose square overflows is handled through the unit axis).
+///
+/// # Errors
+///
+/// [`RotationError::NonFinite`] if a component of `l` is NaN or infinite.
 ///
 /// # Examples
 ///
@@ -477,14 +491,23 @@ pub fn skew(v: DVec3) -> DMat3 {
 /// use spherekit::{UnitQuat, exp_so3};
 ///
 /// let l = DVec3::new(0.0, 0.0, core::f64::consts::FRAC_PI_4);
-/// let r = exp_so3(l);
+/// let r = exp_so3(l)?;
 /// let h = core::f64::consts::FRAC_1_SQRT_2;
 /// assert!((r * DVec3::X - DVec3::new(h, h, 0.0)).length() < 1e-15);
-/// assert!(r.abs_diff_eq(UnitQuat::from_rotation_vector(l).to_rotation_matrix(), 1e-15));
+/// assert!(r.abs_diff_eq(UnitQuat::from_rotation_vector(l).unwrap().to_rotation_matrix(), 1e-15));
+/// # Ok::<(), spherekit::RotationError>(())
 /// ```
-#[must_use]
-pub fn exp_so3(l: DVec3) -> DMat3 {
+pub fn exp_so3(l: DVec3) -> Result<DMat3, RotationError> {
+    if !l.is_finite() {
+        return Err(RotationError::NonFinite);
+    }
     let phi2 = l.length_squared();
+    if !phi2.is_finite() {
+        // K(l)² would overflow: cos φ·I + sin φ·K(n) + (1 − cos φ)·n nᵀ with the unit axis.
+        let (s, c, n) = sin_cos_direction_huge(&l);
+        let k = skew(n);
+        return Ok(DMat3::IDENTITY + k * s + k * k * (1.0 - c));
+    }
     let phi = phi2.sqrt();
     // a = sin φ/φ, b = (1 − cos φ)/φ².
     let (a, b) = if phi < 1e-4 {
@@ -494,12 +517,13 @@ pub fn exp_so3(l: DVec3) -> DMat3 {
         (math::sin(phi) / phi, 2.0 * half * half / phi2)
     };
     let k = skew(l);
-    DMat3::IDENTITY + k * a + k * k * b
+    Ok(DMat3::IDENTITY + k * a + k * k * b)
 }
 
 /// The derivative of the one-parameter subgroup `t ↦ R(n, ωt)` (Pobegailo (2019), §4.6, (4.27)
 /// at `t = 0`): `d/dt R(n, ωt) = ω·K(n)·R(n, ωt)`, for the unit axis `n` (normalised here) and
-/// the angular speed `ω`. Returns `(R(n, ωt), d/dt R(n, ωt))`; `None` when `n` has no direction.
+/// the angular speed `ω`. Returns `(R(n, ωt), d/dt R(n, ωt))`; `None` when `n` has no
+/// direction (zero or not finite), or `ω` or `t` is NaN or infinite, or `ωt` overflows.
 ///
 /// # Examples
 ///
@@ -514,11 +538,16 @@ pub fn exp_so3(l: DVec3) -> DMat3 {
 /// ```
 #[must_use]
 pub fn rotation_derivative(n: DVec3, omega: f64, t: f64) -> Option<(DMat3, DMat3)> {
-    let len = n.length();
-    if !(len.is_finite() && len > 0.0 && omega.is_finite() && t.is_finite()) {
+    if !(omega.is_finite() && t.is_finite()) {
         return None;
     }
-    let axis = n / len;
-    let r = exp_so3(axis * (omega * t));
+    let len = n.length();
+    let axis = if len.is_finite() && len > 0.0 {
+        n / len
+    } else {
+        // |n|² overflows or underflows: normalise by rescaling.
+        normalize(n).ok()?
+    };
+    let r = exp_so3(axis * (omega * t)).ok()?;
     Some((r, skew(axis) * r * omega))
 }

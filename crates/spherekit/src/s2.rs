@@ -47,7 +47,13 @@ impl S2Point {
         normalize(v).map(Self)
     }
 
-    /// Wraps a vector that is already unit length; the invariant is checked in debug builds only.
+    /// Wraps a vector that is already unit length, without normalising it; use
+    /// [`try_new`](Self::try_new) for data.
+    ///
+    /// # Panics
+    ///
+    /// In debug builds, if `v` is not a finite unit vector (to within `1e-12`). Release builds
+    /// do not check.
     #[must_use]
     pub fn new_unchecked(v: DVec3) -> Self {
         debug_assert!((v.length() - 1.0).abs() < 1e-12, "not a unit vector: {v:?}");

@@ -30,10 +30,11 @@
 //! Near π the coefficients grow like `1/sin θ` and `a`, `b` are nearly parallel, so the result
 //! carries the problem's own conditioning (errors of order `ε/(π − θ)`); the normal components
 //! of `G′` and `G″` are then restored exactly (`G·G′ = 0`, `G·G″ = −|G′|²`). Exactly antipodal
-//! endpoints (within [`ANTIPODAL_TOLERANCE`]) have no geodesic and give `None`.
+//! endpoints (within [`ANTIPODAL_TOLERANCE`]) have no geodesic: [`slerp_jet`] reports them.
 
 use crate::ambient::Ambient;
 use crate::curve::Jet;
+use crate::error::PointError;
 use crate::manifold::{ANTIPODAL_TOLERANCE, Manifold, geodesic_frame, renormalize};
 use crate::math;
 
@@ -384,16 +385,23 @@ pub(crate) fn slerp_jet_vec<V: Ambient>(a: &VJet<V>, b: &VJet<V>, u: ScalarJet) 
 /// (slerp, no sign flips) between two moving points of a sphere at a moving fraction.
 ///
 /// `a` and `b` are jets of points on the same sphere (velocities tangent, accelerations the full
-/// ambient second derivatives), `u` the jet of the fraction. Returns `None` when `a` and `b` are
-/// antipodal (within [`ANTIPODAL_TOLERANCE`]), where the geodesic is not unique. Coincident or
-/// nearly coincident `a` and `b` are fine: see the module formulation (everything is a smooth
-/// function of `θ²`).
+/// ambient second derivatives), `u` the jet of the fraction. Coincident or nearly coincident `a`
+/// and `b` are fine: see the module formulation (everything is a smooth function of `θ²`).
 ///
 /// ```text
 /// G  = R(1 − u)·a + R(u)·b,            R(σ) = sin(σθ)/sin θ
 /// G′ = A′a + Aa′ + B′b + Bb′,          A = R(1 − u), B = R(u) (as jets in t)
 /// G″ = A″a + 2A′a′ + Aa″ + B″b + 2B′b′ + Bb″
 /// ```
+///
+/// # Errors
+///
+/// - [`PointError::NonFinite`] if a velocity or acceleration of `a` or `b` has a NaN or
+///   infinite coordinate;
+/// - [`PointError::NonFiniteParameter`] if a component of `u` is NaN or infinite, or the
+///   fraction is so far outside `[0, 1]` that the jet overflows;
+/// - [`PointError::Antipodal`] if `a` and `b` are antipodal (within [`ANTIPODAL_TOLERANCE`]),
+///   where the geodesic is not unique.
 ///
 /// # Examples
 ///
@@ -412,9 +420,21 @@ pub(crate) fn slerp_jet_vec<V: Ambient>(a: &VJet<V>, b: &VJet<V>, u: ScalarJet) 
 /// assert_eq!(j.point, S2Point::X);
 /// assert!(j.velocity.length() < 1e-15 && j.acceleration.length() < 1e-15);
 /// ```
-#[must_use]
-pub fn slerp_jet<P: Manifold>(a: &Jet<P>, b: &Jet<P>, u: ScalarJet) -> Option<Jet<P>> {
-    slerp_jet_vec(&VJet::from_jet(a), &VJet::from_jet(b), u).map(VJet::into_jet)
+pub fn slerp_jet<P: Manifold>(a: &Jet<P>, b: &Jet<P>, u: ScalarJet) -> Result<Jet<P>, PointError> {
+    let finite = |j: &VJet<P::Vector>| j.d.is_finite() && j.dd.is_finite();
+    let (a, b) = (VJet::from_jet(a), VJet::from_jet(b));
+    if !(finite(&a) && finite(&b)) {
+        return Err(PointError::NonFinite);
+    }
+    if !(u.value.is_finite() && u.first.is_finite() && u.second.is_finite()) {
+        return Err(PointError::NonFiniteParameter);
+    }
+    let j = slerp_jet_vec(&a, &b, u).ok_or(PointError::Antipodal)?;
+    if j.v.is_finite() && finite(&j) {
+        Ok(j.into_jet())
+    } else {
+        Err(PointError::NonFiniteParameter)
+    }
 }
 
 #[cfg(test)]

@@ -13,6 +13,10 @@ use crate::manifold::{Manifold, normalize};
 ///
 /// - At least two coordinates (m ≥ 1), all finite.
 /// - `|p| = 1` up to rounding.
+///
+/// Points of spheres of different dimensions meet as points of the larger sphere, the shorter
+/// coordinates padded with zeros (S^m ⊂ S^n, see [`VecN`]): their distance, logarithm and
+/// geodesic are defined, and no operation panics on a mismatch.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SnPoint(VecN);
 

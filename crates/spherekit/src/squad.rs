@@ -213,10 +213,10 @@ crate::curve::piecewise_curve! {
 /// `prev = qᵢ₋₁` and `next = qᵢ₊₁`, `hm = hᵢ₋₁`, `hp = hᵢ`.
 fn inner_point(prev: UnitQuat, q: UnitQuat, next: UnitQuat, hm: f64, hp: f64) -> UnitQuat {
     let qc = q.conjugate();
-    let lp = qc.mul(next).log();
-    let lm = qc.mul(prev).log();
+    let lp = (qc * next).log_pure();
+    let lm = (qc * prev).log_pure();
     let m = (lp * hm + lm * hp) * (-0.5 / (hm + hp));
-    q.mul(UnitQuat::exp(m))
+    q * UnitQuat::exp_pure(m)
 }
 
 impl Squad {

@@ -434,7 +434,7 @@ fn long_curve_far_from_zero_stops_at_the_rounding_of_its_parameters() {
     let mut keys = vec![UnitQuat::IDENTITY];
     while keys.len() < 600 {
         let step = UnitQuat::from_axis_angle(rng.unit3(), rng.range(0.4, 1.2)).expect("unit axis");
-        keys.push(step.mul(keys[keys.len() - 1]));
+        keys.push(step * keys[keys.len() - 1]);
     }
     let c = spherekit::CubicSpline::try_new(keys, None, spherekit::CubicEnd::Scipy, false)
         .expect("cubic");

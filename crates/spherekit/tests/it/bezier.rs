@@ -267,7 +267,7 @@ fn errors() {
     );
     let q = UnitQuat::from_wxyz([0.5, 0.5, 0.5, 0.5]).unwrap();
     assert_eq!(
-        Bezier::try_new(vec![q, q.neg()]).unwrap_err(),
+        Bezier::try_new(vec![q, -q]).unwrap_err(),
         SplineError::Antipodal { index: 0 }
     );
     let p = SnPoint::try_new(vec![1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();

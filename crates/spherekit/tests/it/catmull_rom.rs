@@ -103,21 +103,21 @@ fn s3_textbook_rule() {
         let c = CatmullRom::try_new_quaternion(pts.clone(), knots).unwrap();
         let e = ext(c.joints());
         check(&c, |i| {
-            let mut x = pts[i + 2].mul(pts[i].conjugate());
+            let mut x = pts[i + 2] * pts[i].conjugate();
             if x.scalar() < 0.0 {
-                x = x.neg();
+                x = -x;
             }
-            qv(pts[i + 1], x.log() / (e[i + 2] - e[i]))
+            qv(pts[i + 1], x.log_pure() / (e[i + 2] - e[i]))
         });
         // Uniform knots: dᵢ = Xᵢ^(1/6)·cᵢ and eᵢ = Xᵢ₊₁^(−1/6)·cᵢ₊₁ exactly as in the book.
         if c.joints()[1] == 1.0 {
             for i in 0..5 {
                 let x = |j: usize| {
-                    let x = pts[j + 2].mul(pts[j].conjugate());
-                    if x.scalar() < 0.0 { x.neg() } else { x }
+                    let x = pts[j + 2] * pts[j].conjugate();
+                    if x.scalar() < 0.0 { -x } else { x }
                 };
-                let d = x(i).powf(1.0 / 6.0).mul(pts[i + 1]);
-                let e = x(i + 1).powf(-1.0 / 6.0).mul(pts[i + 2]);
+                let d = x(i).powf(1.0 / 6.0) * pts[i + 1];
+                let e = x(i + 1).powf(-1.0 / 6.0) * pts[i + 2];
                 assert!(c.controls()[3 * i + 1].dist(&d) < 1e-15, "d_{i}");
                 assert!(c.controls()[3 * i + 2].dist(&e) < 1e-15, "e_{i}");
             }
@@ -153,7 +153,7 @@ fn great_circle_reduces_to_the_scalar_spline() {
     let alpha = [-0.3, 0.1, 0.5, 0.6, 1.2, 1.5, 1.4, 2.0];
     let axis = DVec3::new(0.3, -1.0, 0.5).normalize();
     let base = UnitQuat::from_wxyz([0.4, 0.1, -0.7, 0.3]).unwrap();
-    let on = |a: f64| base.mul(UnitQuat::exp(axis * a));
+    let on = |a: f64| base * UnitQuat::exp_pure(axis * a);
     let s2 = |a: f64| S2Point::try_new(DVec3::new(a.cos(), 0.0, a.sin())).unwrap();
     for knots in [vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0], NONUNIFORM.to_vec()] {
         let keys: Vec<UnitQuat> = alpha.iter().map(|&a| on(a)).collect();
@@ -299,7 +299,7 @@ fn errors() {
     let r = UnitQuat::from_wxyz([0.0, 0.0, 1.0, 0.0]).unwrap();
     let i = UnitQuat::IDENTITY;
     assert_eq!(
-        CatmullRom::try_new_quaternion(vec![r.neg(), r, i, i], None).unwrap_err(),
+        CatmullRom::try_new_quaternion(vec![-r, r, i, i], None).unwrap_err(),
         SplineError::Antipodal { index: 0 }
     );
     // n + 1 knots for n + 3 points.

@@ -670,7 +670,7 @@ fn bad_loops_are_typed_errors() {
         assert_eq!(e, SplineError::AntipodalClosing);
     }
     let mut qa = q.clone();
-    qa[4] = qa[0].neg();
+    qa[4] = -qa[0];
     for e in [
         Squad::try_new_closed(qa.clone(), None).unwrap_err(),
         BsplineKim::try_new_closed(qa.clone()).unwrap_err(),

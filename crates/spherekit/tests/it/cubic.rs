@@ -250,7 +250,7 @@ fn scipy_agreement() {
         let (mut angle, mut rate, mut acc) = (0.0_f64, 0.0_f64, 0.0_f64);
         for (k, &t) in ts.iter().enumerate() {
             let j = c.jet(t);
-            angle = angle.max(j.point.inverse().mul(quats[k]).rotation_angle());
+            angle = angle.max((j.point.inverse() * quats[k]).rotation_angle());
             let (w, a) = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
             rate = rate.max((w - rates[k]).length() / rate_scale);
             acc = acc.max((a - accs[k]).length() / acc_scale);
@@ -732,7 +732,7 @@ fn near_half_turn_quaternions() {
         };
         let axis = rng.unit3();
         let last = *q.last().unwrap();
-        q.push(last.mul(UnitQuat::from_axis_angle(axis, angle).unwrap()));
+        q.push(last * UnitQuat::from_axis_angle(axis, angle).unwrap());
     }
     unflip(&mut q);
     let c = CubicSpline::try_new(

@@ -71,14 +71,14 @@ fn bezier_interpolates_ends_with_end_derivatives() {
         let w1 = c.omegas()[0];
         let wn = c.omegas()[n - 1];
         let nf = n as f64;
-        let d0 = v4(q[0].mul(UnitQuat::exp(w1 * 1e-8))) - v4(q[0]);
+        let d0 = v4(q[0] * UnitQuat::exp_pure(w1 * 1e-8)) - v4(q[0]);
         let v0 = c.jet(0.0).velocity;
         assert!(
             (v0 - d0 * (nf / 1e-8)).length() < 1e-6 * v0.length(),
             "q'(0) n={n}"
         );
         let v1 = c.jet(1.0).velocity;
-        let d1 = v4(q[n]) - v4(q[n].mul(UnitQuat::exp(-wn * 1e-8)));
+        let d1 = v4(q[n]) - v4(q[n] * UnitQuat::exp_pure(-wn * 1e-8));
         assert!(
             (v1 - d1 * (nf / 1e-8)).length() < 1e-6 * v1.length(),
             "q'(1) n={n}"
@@ -119,7 +119,7 @@ fn bezier_equals_de_casteljau_on_a_great_circle() {
         }
         let ctrl: Vec<UnitQuat> = alpha
             .iter()
-            .map(|&a| q0.mul(UnitQuat::exp(axis * a)))
+            .map(|&a| q0 * UnitQuat::exp_pure(axis * a))
             .collect();
         let c = BezierKim::try_new(ctrl.clone()).unwrap();
         for t in params(0.0, 1.0, 20) {
@@ -133,7 +133,7 @@ fn bezier_equals_de_casteljau_on_a_great_circle() {
                 })
                 .sum();
             assert!(
-                k.dist(&q0.mul(UnitQuat::exp(axis * s))) < 1e-14,
+                k.dist(&(q0 * UnitQuat::exp_pure(axis * s))) < 1e-14,
                 "n={n} t={t}"
             );
         }
@@ -160,21 +160,18 @@ fn bezier_is_bi_invariant() {
     let q = rng.chain(5, 1.3);
     let (a, b) = (rng.quat(), rng.quat());
     let c = BezierKim::try_new(q.clone()).unwrap();
-    let left = BezierKim::try_new(q.iter().map(|&x| a.mul(x)).collect()).unwrap();
-    let both = BezierKim::try_new(q.iter().map(|&x| a.mul(x).mul(b)).collect()).unwrap();
+    let left = BezierKim::try_new(q.iter().map(|&x| a * x).collect()).unwrap();
+    let both = BezierKim::try_new(q.iter().map(|&x| (a * x) * b).collect()).unwrap();
     for t in params(0.0, 1.0, 17) {
         let j = c.jet(t);
         let jl = left.jet(t);
-        assert!(jl.point.dist(&a.mul(j.point)) < 1e-14, "left at {t}");
+        assert!(jl.point.dist(&(a * j.point)) < 1e-14, "left at {t}");
         // Velocity and acceleration transform by the same left multiplication.
         let av = lmul(a, j.velocity);
         assert!((jl.velocity - av).length() < 1e-13, "left velocity at {t}");
         let aa = lmul(a, j.acceleration);
         assert!((jl.acceleration - aa).length() < 1e-12, "left accel at {t}");
-        assert!(
-            both.eval(t).dist(&a.mul(j.point).mul(b)) < 1e-14,
-            "both at {t}"
-        );
+        assert!(both.eval(t).dist(&(a * j.point * b)) < 1e-14, "both at {t}");
     }
 }
 
@@ -187,9 +184,9 @@ fn lmul(a: UnitQuat, v: DVec4) -> DVec4 {
 fn bezier_near_identical_controls_are_finite() {
     let q0 = UnitQuat::from_wxyz([0.3, 0.5, -0.2, 0.7]).unwrap();
     let tiny = DVec3::new(1e-9, -2e-9, 5e-10);
-    let q1 = q0.mul(UnitQuat::exp(tiny));
+    let q1 = q0 * UnitQuat::exp_pure(tiny);
     let q2 = q1;
-    let q3 = q1.mul(UnitQuat::exp(DVec3::new(0.0, 0.0, 1e-12)));
+    let q3 = q1 * UnitQuat::exp_pure(DVec3::new(0.0, 0.0, 1e-12));
     let c = BezierKim::try_new(vec![q0, q1, q2, q3]).unwrap();
     for t in params(0.0, 1.0, 10) {
         let j = c.jet(t);
@@ -210,7 +207,7 @@ fn bezier_near_identical_controls_are_finite() {
 #[test]
 fn bezier_near_antipodal_is_finite_and_antipodal_is_an_error() {
     let q0 = UnitQuat::from_wxyz([0.3, 0.5, -0.2, 0.7]).unwrap();
-    let near = q0.neg().mul(UnitQuat::exp(DVec3::new(1e-7, 0.0, 0.0)));
+    let near = -q0 * UnitQuat::exp_pure(DVec3::new(1e-7, 0.0, 0.0));
     let c = BezierKim::try_new(vec![q0, near, q0]).unwrap();
     for t in params(0.0, 1.0, 10) {
         let j = c.jet(t);
@@ -220,7 +217,7 @@ fn bezier_near_antipodal_is_finite_and_antipodal_is_an_error() {
         );
     }
     assert_eq!(
-        BezierKim::try_new(vec![q0, q0, q0.neg()]).unwrap_err(),
+        BezierKim::try_new(vec![q0, q0, -q0]).unwrap_err(),
         SplineError::Antipodal { index: 1 }
     );
     assert_eq!(
@@ -267,7 +264,10 @@ fn bspline_derivatives_match_finite_differences() {
 fn bspline_on_one_axis_is_the_scalar_bspline() {
     let axis = DVec3::new(1.0, 2.0, -1.0).normalize();
     let alpha = [0.1, -0.4, 0.9, 1.7, 1.2, 2.5];
-    let q: Vec<UnitQuat> = alpha.iter().map(|&a| UnitQuat::exp(axis * a)).collect();
+    let q: Vec<UnitQuat> = alpha
+        .iter()
+        .map(|&a| UnitQuat::exp_pure(axis * a))
+        .collect();
     let c = BsplineKim::try_new(q).unwrap();
     for t in params(0.0, 3.0, 30) {
         let i = [1.0, 2.0].iter().filter(|&&k| t >= k).count();
@@ -279,7 +279,10 @@ fn bspline_on_one_axis_is_the_scalar_bspline() {
             s.powi(3) / 6.0,
         ];
         let a: f64 = (0..4).map(|k| b[k] * alpha[i + k]).sum();
-        assert!(c.eval(t).dist(&UnitQuat::exp(axis * a)) < 1e-14, "t={t}");
+        assert!(
+            c.eval(t).dist(&UnitQuat::exp_pure(axis * a)) < 1e-14,
+            "t={t}"
+        );
     }
 }
 
@@ -289,16 +292,16 @@ fn bspline_is_left_invariant_and_validates() {
     let q = rng.chain(6, 1.0);
     let r = rng.quat();
     let c = BsplineKim::try_new(q.clone()).unwrap();
-    let rc = BsplineKim::try_new(q.iter().map(|&x| r.mul(x)).collect()).unwrap();
+    let rc = BsplineKim::try_new(q.iter().map(|&x| r * x).collect()).unwrap();
     for t in params(0.0, 3.0, 19) {
-        assert!(rc.eval(t).dist(&r.mul(c.eval(t))) < 1e-14, "t={t}");
+        assert!(rc.eval(t).dist(&(r * c.eval(t))) < 1e-14, "t={t}");
     }
     assert_eq!(
         BsplineKim::try_new(q[..3].to_vec()).unwrap_err(),
         SplineError::TooFewPoints { min: 4, got: 3 }
     );
     let mut bad = q;
-    bad[3] = bad[2].neg();
+    bad[3] = -bad[2];
     assert_eq!(
         BsplineKim::try_new(bad).unwrap_err(),
         SplineError::Antipodal { index: 2 }
@@ -309,7 +312,10 @@ fn bspline_is_left_invariant_and_validates() {
 fn angular_velocity_of_a_one_axis_bezier() {
     // Rotation about z by angle 2α(t) with α(t) = Σ Bᵢ αᵢ: ω = 2α′(t)·z, α_acc = 2α″(t)·z.
     let alpha = [0.0, 0.3, 0.5, 1.1];
-    let q: Vec<UnitQuat> = alpha.iter().map(|&a| UnitQuat::exp(DVec3::Z * a)).collect();
+    let q: Vec<UnitQuat> = alpha
+        .iter()
+        .map(|&a| UnitQuat::exp_pure(DVec3::Z * a))
+        .collect();
     let c = BezierKim::try_new(q).unwrap();
     for t in params(0.0, 1.0, 8) {
         let u = 1.0 - t;

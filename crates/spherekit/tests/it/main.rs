@@ -20,6 +20,7 @@ mod cubic;
 mod extrapolate;
 mod gamma_spline;
 mod geodesic;
+mod hostile_inputs;
 mod kim;
 mod long_sequences;
 mod manifold;

@@ -60,7 +60,7 @@ fn random_walk(rng: &mut Rng, count: usize) -> Vec<UnitQuat> {
     while out.len() < count {
         let step = DVec3::new(rng.normal(), rng.normal(), rng.normal()) * 0.5;
         let last = out[out.len() - 1];
-        out.push(UnitQuat::exp(step).mul(last));
+        out.push(UnitQuat::exp_pure(step) * last);
     }
     out
 }
@@ -308,8 +308,7 @@ fn orientation_spline_equivariance() {
     let alpha = UnitQuat::from_axis_angle(DVec3::new(0.3, 1.0, -0.4), 0.9).unwrap();
     let beta = UnitQuat::from_axis_angle(DVec3::new(-1.0, 0.2, 0.5), 2.1).unwrap();
     // x ↦ αxβ (SO(4)) and x ↦ x̄ (a reflection of ℝ⁴).
-    let maps: [&dyn Fn(UnitQuat) -> UnitQuat; 2] =
-        [&|x| alpha.mul(x).mul(beta), &|x| x.conjugate()];
+    let maps: [&dyn Fn(UnitQuat) -> UnitQuat; 2] = [&|x| alpha * x * beta, &|x| x.conjugate()];
     for g in maps {
         let d = ArcBlend::try_new(pts.iter().map(|&x| g(x)).collect(), 2).unwrap();
         for (a, b) in c.knots().iter().zip(d.knots()) {
@@ -330,7 +329,7 @@ fn orientation_spline_bad_input() {
         SplineError::TooFewPoints { min: 3, got: 2 }
     );
     let mut anti = pts.clone();
-    anti[2] = anti[1].neg();
+    anti[2] = -anti[1];
     assert_eq!(
         ArcBlend::try_new(anti, 2).unwrap_err(),
         SplineError::Antipodal { index: 1 }
@@ -353,9 +352,7 @@ fn orientation_spline_bad_input() {
 
 fn r3_points() -> Vec<UnitQuat> {
     let p2 = UnitQuat::from_axis_angle(DVec3::X, PI / 2.0).unwrap();
-    let p3 = UnitQuat::from_axis_angle(DVec3::Y, PI / 2.0)
-        .unwrap()
-        .mul(p2);
+    let p3 = UnitQuat::from_axis_angle(DVec3::Y, PI / 2.0).unwrap() * p2;
     vec![UnitQuat::IDENTITY, p2, p3]
 }
 
@@ -466,13 +463,11 @@ fn orientation_corner_printed_formula_misses_the_cut_points() {
     let c = CornerBlendS3::try_new(pts.clone(), 2, 0.25).unwrap();
     let k = c.knots();
     let (q1, q2) = (c.eval(k[1]), c.eval(k[2]));
-    let e = |axis: DVec3, s: f64| UnitQuat::exp(axis * s);
+    let e = |axis: DVec3, s: f64| UnitQuat::exp_pure(axis * s);
     let (phi2, psi1) = (PI / 16.0, PI / 16.0); // S³ angles: a quarter of each 45° edge
     let w = SmoothingPolynomials::try_new(2).unwrap();
     let corner = |base: UnitQuat, u: f64| {
-        e(DVec3::Y, w.w1(u) * psi1)
-            .mul(e(DVec3::X, -w.w1(1.0 - u) * phi2))
-            .mul(base)
+        e(DVec3::Y, w.w1(u) * psi1) * e(DVec3::X, -w.w1(1.0 - u) * phi2) * base
     };
     assert!(
         corner(q1, 0.0).dist(&q1) > 0.1 && corner(q1, 1.0).dist(&q2) > 0.1,
@@ -537,16 +532,12 @@ fn orientation_corner_equivariance_and_bad_input() {
     let pts = random_walk(&mut rng, 5);
     let c = CornerBlendS3::try_new(pts.clone(), 2, 0.25).unwrap();
     let (alpha, beta) = (random_quat(&mut rng), random_quat(&mut rng));
-    let d = CornerBlendS3::try_new(
-        pts.iter().map(|&x| alpha.mul(x).mul(beta)).collect(),
-        2,
-        0.25,
-    )
-    .unwrap();
+    let d =
+        CornerBlendS3::try_new(pts.iter().map(|&x| alpha * x * beta).collect(), 2, 0.25).unwrap();
     for j in 0..=50 {
         let t = c.domain()[1] * f64::from(j) / 50.0;
         assert!(
-            alpha.mul(c.eval(t)).mul(beta).dist(&d.eval(t)) < 1e-14,
+            (alpha * c.eval(t) * beta).dist(&d.eval(t)) < 1e-14,
             "equivariant"
         );
     }
@@ -562,7 +553,7 @@ fn orientation_corner_equivariance_and_bad_input() {
         })
     ));
     let mut anti = pts.clone();
-    anti[3] = anti[2].neg();
+    anti[3] = -anti[2];
     assert_eq!(
         CornerBlendS3::try_new(anti, 2, 0.25).unwrap_err(),
         SplineError::Antipodal { index: 2 }

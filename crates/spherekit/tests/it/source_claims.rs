@@ -83,11 +83,11 @@ fn slerp_turns_forty_percent_at_point_four() {
         let p = rng.quat();
         let mut q = rng.quat();
         if p.to_vector().dot(q.to_vector()) < 0.0 {
-            q = q.neg();
+            q = -q;
         }
         let r = p.slerp(&q, 0.4);
-        let whole = q.mul(p.inverse()).rotation_angle();
-        let part = r.mul(p.inverse()).rotation_angle();
+        let whole = (q * p.inverse()).rotation_angle();
+        let part = (r * p.inverse()).rotation_angle();
         assert!((part - 0.4 * whole).abs() < 1e-13, "{part} vs 0.4·{whole}");
     }
     let q = UnitQuat::from_axis_angle(DVec3::Z, 2.0).unwrap();

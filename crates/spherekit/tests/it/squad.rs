@@ -63,8 +63,8 @@ fn c1_at_joints_with_the_central_difference_velocity() {
             let i = j + 1;
             assert!(r.c0 < 1e-15 && r.c1 < 1e-12, "joint {i}: {r:?}");
             max_c2 = max_c2.max(r.c2);
-            let lp = k[i].conjugate().mul(k[i + 1]).log();
-            let lm = k[i].conjugate().mul(k[i - 1]).log();
+            let lp = (k[i].conjugate() * k[i + 1]).log_pure();
+            let lm = (k[i].conjugate() * k[i - 1]).log_pure();
             let v = qv(k[i], (lp - lm) / (u[i + 1] - u[i - 1]));
             let got = c.jet_at(u[i], Side::Left).velocity;
             assert!(
@@ -75,10 +75,10 @@ fn c1_at_joints_with_the_central_difference_velocity() {
         assert!(max_c2 > 1e-3, "squad is not C2 in general ({max_c2})");
         // End velocities: q0·L⁺/h0 and −qn·L⁻/h_{n−1}.
         let n = k.len() - 1;
-        let v0 = qv(k[0], k[0].conjugate().mul(k[1]).log() / (u[1] - u[0]));
+        let v0 = qv(k[0], (k[0].conjugate() * k[1]).log_pure() / (u[1] - u[0]));
         let vn = qv(
             k[n],
-            -k[n].conjugate().mul(k[n - 1]).log() / (u[n] - u[n - 1]),
+            -(k[n].conjugate() * k[n - 1]).log_pure() / (u[n] - u[n - 1]),
         );
         assert!(
             (c.jet(u[0]).velocity - v0).length() < 1e-13,
@@ -137,7 +137,7 @@ fn keys_on_one_great_circle_give_the_scalar_squad() {
     let alpha = [0.2, 0.9, 1.3, 0.7, 1.6, 2.4];
     let axis = DVec3::new(1.0, -2.0, 0.5).normalize();
     let base = UnitQuat::from_wxyz([0.4, 0.1, -0.7, 0.3]).unwrap();
-    let on = |a: f64| base.mul(UnitQuat::exp(axis * a));
+    let on = |a: f64| base * UnitQuat::exp_pure(axis * a);
     for knots in [vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0], NONUNIFORM.to_vec()] {
         let c =
             Squad::try_new(alpha.iter().map(|&a| on(a)).collect(), Some(knots.clone())).unwrap();
@@ -223,7 +223,7 @@ fn errors() {
     assert!(e.to_string().contains("at least 2"), "{e}");
     let r = UnitQuat::from_wxyz([0.0, 1.0, 0.0, 0.0]).unwrap();
     assert_eq!(
-        Squad::try_new(vec![q, r, r.neg()], None).unwrap_err(),
+        Squad::try_new(vec![q, r, -r], None).unwrap_err(),
         SplineError::Antipodal { index: 1 }
     );
     assert_eq!(

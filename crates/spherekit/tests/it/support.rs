@@ -120,7 +120,7 @@ impl Rng {
         let mut out = vec![p];
         for _ in 1..n {
             let w = DVec3::new(self.normal(), self.normal(), self.normal()) * step;
-            p = UnitQuat::exp(w).mul(p);
+            p = UnitQuat::exp_pure(w) * p;
             out.push(p);
         }
         out
@@ -144,7 +144,7 @@ impl Rng {
         for _ in 1..n {
             let v = self.unit3() * self.range(0.05, step);
             let last = *q.last().unwrap();
-            q.push(last.mul(UnitQuat::exp(v)));
+            q.push(last * UnitQuat::exp_pure(v));
         }
         q
     }
@@ -335,7 +335,7 @@ pub fn v4(q: UnitQuat) -> DVec4 {
 
 /// `a·q·b` as a unit quaternion (an orthogonal map of ℝ⁴ applied to `q`).
 pub fn sandwich(a: UnitQuat, q: UnitQuat, b: UnitQuat) -> UnitQuat {
-    a.mul(q).mul(b)
+    a * q * b
 }
 
 /// A Householder reflection of ℝ^(m+1) applied to a point of S^m (an orthogonal map).
