@@ -375,7 +375,7 @@ fn check_rotation_matrix(m: &DMat3) -> Result<(), RotationError> {
         return Err(RotationError::NotOrthogonal { deviation });
     }
     let det = m.determinant();
-    if !((det - 1.0).abs() <= ROTATION_TOLERANCE) {
+    if det.is_nan() || (det - 1.0).abs() > ROTATION_TOLERANCE {
         return Err(RotationError::NotProper { det });
     }
     Ok(())

@@ -496,7 +496,7 @@ fn every_manifold_operation_on_hostile_pairs() {
                 // Tangents of the point's own dimension and of others.
                 let v = VecN::new(vec![a, 1.0, -a]);
                 check_manifold_ops(&p, &q, &v, HOSTILE[(k + 5) % HOSTILE.len()]);
-                let w = VecN::new(vec![0.0; p.coords().len()]).with_coords(&vec![a; 8]);
+                let w = VecN::new(vec![0.0; p.coords().len()]).with_coords(&[a; 8]);
                 check_manifold_ops(&p, &q, &w, a);
             }
         }
