@@ -7,12 +7,17 @@ layer over them.
 
 - :class:`Curve` — any registered method (``spherekit.methods()``) on any sphere.
 - :class:`RotationSpline`, :class:`Slerp` — drop-ins for ``scipy.spatial.transform``'s
-  classes of the same names (scipy is optional: without it, rotations are ``(n, 4)``
-  scalar-last quaternion arrays).
+  classes of the same names, quaternions and all (scipy is optional: without it, rotations are
+  ``(n, 4)`` quaternion arrays).
 - :func:`sample`, :func:`render`, :func:`render_png` — whole JSON scenes, as the
   ``spherekit`` CLI takes them; :func:`methods` — the method registry.
 
-Bad input raises ``ValueError`` with the CLI's one-line message.
+Quaternions are scalar last, ``[x, y, z, w]`` as scipy's ``Rotation.as_quat()``, in and out,
+or ``[w, x, y, z]`` with ``scalar_first=True``: in ``Curve``, the drop-ins, and scenes given to
+``sample``/``render``/``render_png`` as dicts. A scene given as JSON text or a file path is the
+CLI's format, ``[w, x, y, z]`` (``scalar_first=False`` reads it scalar last); a scene's own
+``"quaternion_order"`` wins. Bad input, a NaN time included, raises ``ValueError`` with a
+one-line message (the CLI's for scenes).
 
 >>> import numpy as np, spherekit
 >>> c = spherekit.Curve("squad", [[0, 0, 0, 1], [0, 0, 0.3826834, 0.9238795], [0.5, 0.5, 0, 0.7071068]])

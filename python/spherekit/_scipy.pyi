@@ -8,7 +8,8 @@ _Times = Union[float, npt.ArrayLike]
 
 class RotationSpline:
     times: npt.NDArray[np.float64]
-    rotations: Any
+    @property
+    def rotations(self) -> Any: ...
     def __init__(
         self,
         times: npt.ArrayLike,
@@ -18,6 +19,7 @@ class RotationSpline:
         closed: bool = False,
         start_rate: Optional[npt.ArrayLike] = None,
         end_rate: Optional[npt.ArrayLike] = None,
+        scalar_first: bool = False,
     ) -> None: ...
     @overload
     def __call__(self, times: _Times) -> Any: ...
@@ -29,5 +31,9 @@ class RotationSpline:
 class Slerp:
     times: npt.NDArray[np.float64]
     timedelta: npt.NDArray[np.float64]
-    def __init__(self, times: npt.ArrayLike, rotations: Any) -> None: ...
+    @property
+    def rotations(self) -> Any: ...
+    @property
+    def rotvecs(self) -> npt.NDArray[np.float64]: ...
+    def __init__(self, times: npt.ArrayLike, rotations: Any, *, scalar_first: bool = False) -> None: ...
     def __call__(self, times: _Times) -> Any: ...

@@ -385,13 +385,14 @@ impl PyCurve {
         })
     }
 
-    /// The constructor's arguments, `((method, points), keywords)`: what `pickle` and
-    /// `copy.deepcopy` rebuild the curve from (the same construction, the same bits).
-    fn __getnewargs_ex__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
-        let a = &self.args;
+    /// `(functools.partial(Curve, **keywords), (method, points))`: `pickle` (every protocol)
+    /// and `copy.deepcopy` rebuild the curve from the constructor's arguments (the same
+    /// construction, the same bits).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let a = &slf.get().args;
         let width = a.points.first().map_or(0, Vec::len);
         let flat: Vec<f64> = a.points.iter().flatten().copied().collect();
         let points = PyArray1::from_vec(py, flat).reshape([a.points.len(), width])?;
@@ -406,7 +407,11 @@ impl PyCurve {
         if let Some(params) = &a.params {
             kwargs.update(from_json(py, params)?.cast::<PyDict>()?.as_mapping())?;
         }
-        Ok(((a.method.as_str(), points).into_pyobject(py)?, kwargs))
+        let rebuild = py
+            .import("functools")?
+            .getattr("partial")?
+            .call((slf.get_type(),), Some(&kwargs))?;
+        Ok((rebuild, (a.method.as_str(), points).into_pyobject(py)?))
     }
 
     /// The points (`order=0`), velocities (1) or accelerations (2) at the parameters `t`.

@@ -4,15 +4,17 @@
 //! The native side of the scipy drop-ins: the cubic (`RotationSpline`) and the geodesic
 //! (`Slerp`) spline through unit quaternions at given times, built with the core directly.
 //!
-//! Quaternions cross this boundary scalar-last (`[x, y, z, w]`, scipy's and glam's order);
-//! angular rates are in the body frame (scipy's `RotationSpline`). The scipy-facing argument
-//! checks and messages live in `python/spherekit/_scipy.py`.
+//! Quaternions cross this boundary scalar-last (`[x, y, z, w]`, scipy's and glam's order), or
+//! scalar-first with `scalar_first=True`, with scipy's signs ([`Signs`]); angular rates are in
+//! the body frame (scipy's `RotationSpline`). The scipy-facing argument checks and messages
+//! live in `python/spherekit/_scipy.py`.
 //!
 //! # Extrapolation
 //!
 //! scipy's `RotationSpline` evaluates its end segments' cubic polynomials outside the key
 //! times (its `PPoly` extrapolates): the core's [`Extrapolate::Segment`] on an open
-//! [`CubicSpline`] (a closed one repeats, [`Extrapolate::Cycle`]).
+//! [`CubicSpline`]. A closed one is a [`RotationLoop`] (closed in SO(3): a loop of an odd
+//! number of full turns ends at `−q₀`) and repeats, [`Extrapolate::Cycle`].
 
 use std::borrow::Cow;
 
@@ -20,8 +22,8 @@ use numpy::PyUntypedArrayMethods;
 use pyo3::prelude::*;
 use spherekit::glam::{DQuat, DVec4};
 use spherekit::{
-    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GeodesicSpline, Manifold, UnitQuat,
-    angular_velocity_acceleration_body, unflip,
+    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GeodesicSpline, Manifold,
+    RotationLoop, UnitQuat, angular_velocity_acceleration_body, unflip,
 };
 
 use crate::batch;
@@ -139,10 +141,10 @@ fn segment(knots: &[f64], t: f64, right: bool, hint: &mut usize) -> usize {
 }
 
 /// `t` taken into the period `[t0, t1)` as [`Extrapolate::Cycle`] takes it (the same
-/// arithmetic, so the same bits); a time inside the domain as it is (`t1` too), and `±∞` as it
-/// is (no period: the curve clamps it).
+/// arithmetic, so the same bits; `t1` itself is `t0`); `±∞` as it is (no period: the curve
+/// clamps it).
 fn into_period(t: f64, t0: f64, t1: f64) -> f64 {
-    if (t0..=t1).contains(&t) || !t.is_finite() {
+    if (t0 <= t && t < t1) || !t.is_finite() {
         return t;
     }
     let period = t1 - t0;
@@ -169,10 +171,63 @@ fn rate(v: Option<Vec<f64>>, name: &str) -> PyResult<Option<spherekit::glam::DVe
 /// The cubic spline of scipy's `RotationSpline` (and its natural, clamped and closed kin).
 #[pyclass(module = "spherekit._spherekit", name = "_CubicRotations", frozen)]
 pub(crate) struct PyCubicRotations {
-    /// The spline, continuing its end segments outside the key times (closed: periodic).
-    curve: Extrapolated<CubicSpline<UnitQuat>>,
+    curve: Cubic,
+    /// The key times (closed: and the time of the return to the first key).
+    times: Vec<f64>,
+    /// The number of keys.
+    n: usize,
     /// scipy's signs of the quaternions written.
     signs: Signs,
+}
+
+/// The spline and what it is outside the key times.
+enum Cubic {
+    /// Open: the end segments' cubics continued ([`Extrapolate::Segment`], scipy's).
+    Open(Extrapolated<CubicSpline<UnitQuat>>),
+    /// Closed: a loop of rotations, closed in SO(3) ([`RotationLoop`]: a loop of an odd number
+    /// of full turns ends at `−q₀` rather than turning back the long way), repeated
+    /// ([`Extrapolate::Cycle`]).
+    Closed(Extrapolated<RotationLoop<CubicSpline<UnitQuat>>>),
+}
+
+/// `$body` with `$c` the spline, open or closed, as an `Extrapolated` curve.
+macro_rules! with_cubic {
+    ($curve:expr, |$c:ident| $body:expr) => {
+        match &$curve {
+            Cubic::Open($c) => $body,
+            Cubic::Closed($c) => $body,
+        }
+    };
+}
+
+impl Cubic {
+    /// The cubic spline built (closed and antiperiodic: through the doubled keys, of which
+    /// the loop is the first half).
+    fn spline(&self) -> &CubicSpline<UnitQuat> {
+        match self {
+            Self::Open(c) => c.curve(),
+            Self::Closed(c) => c.curve().inner(),
+        }
+    }
+
+    fn domain(&self) -> [f64; 2] {
+        with_cubic!(self, |c| c.domain())
+    }
+
+    /// Whether every time of `ts` is one where the spline built is the curve: the key times
+    /// (closed: short of the return, where an antiperiodic loop ends at `−q₀`).
+    fn spline_holds(&self, ts: &[f64]) -> bool {
+        let [t0, t1] = self.domain();
+        // Folds rather than `all`: no early exit, so the check is vectorised.
+        match self {
+            Self::Open(_) => ts
+                .iter()
+                .fold(true, |inside, &t| inside & (t0 <= t) & (t <= t1)),
+            Self::Closed(_) => ts
+                .iter()
+                .fold(true, |inside, &t| inside & (t0 <= t) & (t < t1)),
+        }
+    }
 }
 
 /// `order` of scipy's `RotationSpline.__call__`: quaternions, body rates, body accelerations.
@@ -191,13 +246,12 @@ impl PyCubicRotations {
     /// them. A closed spline's quaternions are periodic: `t` is taken into `[t₀, t_n)` first
     /// (as [`Extrapolate::Cycle`] does, the same bits) and its segment found there.
     fn quaternions(&self, ts: &[f64], scalar_first: bool) -> Vec<f64> {
-        let spline = self.curve.curve();
-        let knots = spline.knots();
-        let [t0, t1] = spline.domain();
-        let closed = spline.closed();
+        let [t0, t1] = self.curve.domain();
+        let closed = matches!(self.curve, Cubic::Closed(_));
+        let slot = self.curve.spline().eval(t0);
         batch::split(ts, 4, |ts, out| {
             let mut taken = Vec::new();
-            batch::by_chunks(ts, out, 4, t0, spline.eval(t0), |chunk, ps, rows| {
+            batch::by_chunks(ts, out, 4, t0, slot, |chunk, ps, rows| {
                 let chunk = if closed {
                     taken.clear();
                     taken.extend(chunk.iter().map(|&t| into_period(t, t0, t1)));
@@ -205,11 +259,11 @@ impl PyCubicRotations {
                 } else {
                     chunk
                 };
-                self.curve.eval_many(chunk, ps);
+                with_cubic!(self.curve, |c| c.eval_many(chunk, ps));
                 for (p, row) in ps.iter().zip(rows.chunks_exact_mut(4)) {
                     p.write_point(scalar_first, row);
                 }
-                self.signs.apply(knots, chunk, true, rows);
+                self.signs.apply(&self.times, chunk, true, rows);
             });
         })
     }
@@ -218,20 +272,16 @@ impl PyCubicRotations {
     /// ([`CubicSpline::point_velocity_many`]: the jet's bits without its acceleration). A
     /// chunk with a parameter outside the key times goes through the extrapolation's jets.
     fn body_rates(&self, ts: &[f64]) -> Vec<f64> {
-        let spline = self.curve.curve();
-        let [t0, t1] = spline.domain();
+        let spline = self.curve.spline();
+        let t0 = self.curve.domain()[0];
         batch::split(ts, 3, |ts, out| {
             let slot = spline.point_velocity(t0);
             batch::by_chunks(ts, out, 3, t0, slot, |chunk, pvs, rows| {
-                // A fold rather than `all`: no early exit, so the check is vectorised.
-                if chunk
-                    .iter()
-                    .fold(true, |inside, &t| inside & (t0 <= t) & (t <= t1))
-                {
+                if self.curve.spline_holds(chunk) {
                     spline.point_velocity_many(chunk, pvs);
                 } else {
                     for (&t, pv) in chunk.iter().zip(pvs.iter_mut()) {
-                        let jet = self.curve.jet(t);
+                        let jet = with_cubic!(self.curve, |c| c.jet(t));
                         *pv = (jet.point, jet.velocity);
                     }
                 }
@@ -247,9 +297,9 @@ impl PyCubicRotations {
     fn body_accelerations(&self, ts: &[f64]) -> Vec<f64> {
         let t0 = self.curve.domain()[0];
         batch::split(ts, 3, |ts, out| {
-            let slot = self.curve.jet(t0);
+            let slot = self.curve.spline().jet(t0);
             batch::by_chunks(ts, out, 3, t0, slot, |chunk, jets, rows| {
-                self.curve.jet_many(chunk, jets);
+                with_cubic!(self.curve, |c| c.jet_many(chunk, jets));
                 for (jet, row) in jets.iter().zip(rows.chunks_exact_mut(3)) {
                     let (_, a) = angular_velocity_acceleration_body(
                         jet.point,
@@ -316,16 +366,24 @@ impl PyCubicRotations {
                 "`rotations` must contain at least 2 rotations.",
             ));
         }
-        let spline = py
-            .detach(|| CubicSpline::try_new(keys, Some(times), end, closed))
+        let n = keys.len();
+        let knots = times.clone();
+        let curve = py
+            .detach(|| {
+                if closed {
+                    let build = |keys, knots| CubicSpline::try_new(keys, knots, end, true);
+                    RotationLoop::try_new(keys, Some(knots), build)
+                        .map(|c| Cubic::Closed(Extrapolated::new(c, Extrapolate::Cycle)))
+                } else {
+                    CubicSpline::try_new(keys, Some(knots), end, false)
+                        .map(|c| Cubic::Open(Extrapolated::new(c, Extrapolate::Segment)))
+                }
+            })
             .map_err(|e| value_error(e.to_string()))?;
-        let policy = if closed {
-            Extrapolate::Cycle
-        } else {
-            Extrapolate::Segment
-        };
         Ok(Self {
-            curve: Extrapolated::new(spline, policy),
+            curve,
+            times,
+            n,
             signs,
         })
     }
@@ -352,7 +410,8 @@ impl PyCubicRotations {
     }
 
     /// The end segments' cubic at `t` whether inside the domain or not (`order` as in
-    /// `__call__`), for testing the extrapolation against the spline itself.
+    /// `__call__`), for testing the extrapolation against the spline itself (NaN for a closed
+    /// spline, which has no ends).
     #[pyo3(signature = (t, order=0))]
     fn _extrapolated<'py>(
         &self,
@@ -363,11 +422,12 @@ impl PyCubicRotations {
         let what = what(order)?;
         let width = if what == What::Point { 4 } else { 3 };
         let mut out = vec![f64::NAN; width];
-        let spline = self.curve.curve();
-        if let Some(jet) = spline.continued_jet(t) {
+        if let Cubic::Open(c) = &self.curve
+            && let Some(jet) = c.curve().continued_jet(t)
+        {
             write_jets(&[jet], what, false, width, &mut out);
             if what == What::Point {
-                self.signs.apply(spline.knots(), &[t], true, &mut out);
+                self.signs.apply(&self.times, &[t], true, &mut out);
             }
         }
         rows(py, out, width, true)
@@ -376,17 +436,14 @@ impl PyCubicRotations {
     /// Newton iterations of the construction and the final relative residual.
     #[getter]
     fn solve_info(&self) -> (usize, f64) {
-        let info = self.curve.curve().solve_info();
+        let info = self.curve.spline().solve_info();
         (info.iterations, info.residual)
     }
 
     /// The keys as the spline uses them (normalised, canonicalised), `[x, y, z, w]`.
     #[getter]
     fn keys<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let data: Vec<f64> = self
-            .curve
-            .curve()
-            .points()
+        let data: Vec<f64> = self.curve.spline().points()[..self.n]
             .iter()
             .flat_map(|q| q.to_vector().to_array())
             .collect();
