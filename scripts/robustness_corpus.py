@@ -252,6 +252,14 @@ def cases():
             pts = loop[:3] + [[-x for x in loop[0]]]
             extra = {"canonicalize": False} if space == "S3" else {}
             yield f"{pre}_seam_antipodal", scene(space, method, pts, closed=True, samples=17, **extra)
+            if space == "S3":
+                # Camera orbits of one full turn in 3 and 4 keys: loops of rotations closed at −q₀,
+                # also repeated under "cycle" past both ends.
+                for k in (3, 4):
+                    orbit = [rot([0.0, 0.0, 1.0], 2 * math.pi * i / k) for i in range(k)]
+                    yield f"{pre}_full_turn_orbit_{k}", scene(space, method, orbit, closed=True, samples=65)
+                yield f"{pre}_full_turn_orbit_cycle_params_edge", scene(
+                    space, method, orbit, closed=True, eval_at=EDGE_PARAMS, extrapolate="cycle")
             if method in TAKES_KNOTS:
                 mixed = [0.0]
                 for i in range(1, n + 1):
@@ -542,7 +550,6 @@ def bad_cases():
         ("closed_catmull_rom_open_knot_count", '{"space":"S2","method":"catmull-rom","closed":true,"points":[[1,0,0],[0,1,0],[0,0,1],[-1,0.2,0.3]],"knots":[0,1]}', "knots: expected 5 knots, got 2"),
         ("closed_squad_knots_not_increasing", '{"space":"S3","method":"squad","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0]],"knots":[0,1,1,2]}', "knots[2] is not greater than knots[1]"),
         ("closed_gamma_list_wrong_length", '{"space":"S3","method":"gamma","closed":true,"points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"gamma":[1,2]}}', "params.gamma: must have one value per knot but the last (4), got 2"),
-        ("closed_squad_one_full_turn", '{"space":"S3","method":"squad","closed":true,"points":[[1,0,0,0],[0.7071,0,0,0.7071],[0,0,0,1],[-0.7071,0,0,0.7071]]}', "closed: the keys turn by an odd number of full turns"),
         ("closed_arc_blend_book_does_not_close", '{"space":"S2","method":"arc-blend","closed":true,"params":{"timing":"book"},"points":[[1,0,0.3],[0.2,0.9,0.4],[-0.8,0.4,0.1],[-0.3,-0.9,0.5]]}', "params.timing: the book knots do not close the loop"),
         ("closed_arc_blend_no_circle_around", '{"space":"S2","method":"arc-blend","closed":true,"points":[[1,0,0.3],[0.2,0.9,0.4],[-0.8,0.4,0.1],[1,0,0.3],[0.1,-0.9,0.5]]}', "points[3] and points[0] coincide: no unique circle"),
         ("extrapolate_unknown", "{" + S2 + ',"extrapolate":"clamp"}', 'extrapolate: "clamp" is not an extrapolation policy'),

@@ -62,6 +62,7 @@ mod json;
 mod methods;
 mod params;
 mod registry;
+mod rotation_loop;
 mod scene;
 mod space;
 mod timing;

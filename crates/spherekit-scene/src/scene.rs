@@ -12,6 +12,7 @@ use crate::error::{SceneError, field_error, in_curve};
 use crate::json::json_error;
 use crate::params::Params;
 use crate::registry::{KnotRule, Method};
+use crate::rotation_loop;
 use crate::space::Space;
 use crate::timing::{Parametrization, extrapolate_name, parse_extrapolate};
 use crate::view::View;
@@ -297,8 +298,15 @@ impl CurveSpec {
                 let mut keys: Vec<UnitQuat> = points(&self.points)?;
                 if self.canonicalize {
                     unflip(&mut keys);
-                    if self.closed {
-                        check_loop_signs(&keys)?;
+                    // A loop of an odd number of full turns: closed in SO(3), at −q₀.
+                    if self.closed && rotation_loop::closes_at_antipode(&keys) {
+                        let built = rotation_loop::build(
+                            self.method,
+                            keys,
+                            self.knots.clone(),
+                            &self.params,
+                        )?;
+                        return built.retime(self.parametrization, self.extrapolate);
                     }
                 }
                 Points::S3(keys)
@@ -325,24 +333,6 @@ impl CurveSpec {
         })?;
         built.retime(self.parametrization, self.extrapolate)
     }
-}
-
-/// After `unflip`, a closed loop of keys whose last and first keys are more than a right angle
-/// apart on S³ (`q_{n−1}·q₀ < 0`) turns by an odd number of full turns: every choice of signs
-/// leaves one step longer than a half turn of rotation (flipping a key changes the sign of two
-/// of the loop's dot products, so the sign of their product is fixed). A closed quaternion curve
-/// would return the long way round; rather than draw that, the scene says so.
-fn check_loop_signs(keys: &[UnitQuat]) -> Result<(), SceneError> {
-    let (Some(first), Some(last)) = (keys.first(), keys.last()) else {
-        return Ok(());
-    };
-    if keys.len() >= 2 && first.as_dquat().dot(last.as_dquat()) < 0.0 {
-        return Err(field_error(
-            "closed",
-            "the keys turn by an odd number of full turns around the loop: after canonicalisation the last key is more than a half turn of rotation from the first, so the loop would return the long way; add keys or give \"canonicalize\": false to use the keys as given",
-        ));
-    }
-    Ok(())
 }
 
 /// The normalised points of a curve, on its sphere.
