@@ -98,21 +98,37 @@ pub(crate) fn evaluate<P: Flat, C: Curve<Point = P> + Sync + ?Sized>(
     width: usize,
     scalar_first: bool,
 ) -> Vec<f64> {
+    if what == What::Point {
+        return evaluate_points(curve, ts, width, scalar_first, |_, _| {});
+    }
     let t0 = curve.domain()[0];
     batch::split(ts, width, |ts, out| {
-        if what == What::Point {
-            batch::by_chunks(ts, out, width, t0, curve.eval(t0), |chunk, ps, rows| {
-                curve.eval_many(chunk, ps);
-                for (p, row) in ps.iter().zip(rows.chunks_exact_mut(width)) {
-                    p.write_point(scalar_first, row);
-                }
-            });
-        } else {
-            batch::by_chunks(ts, out, width, t0, curve.jet(t0), |chunk, js, rows| {
-                curve.jet_many(chunk, js);
-                write_jets(js, what, scalar_first, width, rows);
-            });
-        }
+        batch::by_chunks(ts, out, width, t0, curve.jet(t0), |chunk, js, rows| {
+            curve.jet_many(chunk, js);
+            write_jets(js, what, scalar_first, width, rows);
+        });
+    })
+}
+
+/// The points at every parameter as rows (`width` numbers each), as [`evaluate`]; each chunk's
+/// rows are then passed to `fix(parameters, rows)` (on the thread that wrote them, while they
+/// are in cache).
+pub(crate) fn evaluate_points<P: Flat, C: Curve<Point = P> + Sync + ?Sized>(
+    curve: &C,
+    ts: &[f64],
+    width: usize,
+    scalar_first: bool,
+    fix: impl Fn(&[f64], &mut [f64]) + Sync,
+) -> Vec<f64> {
+    let t0 = curve.domain()[0];
+    batch::split(ts, width, |ts, out| {
+        batch::by_chunks(ts, out, width, t0, curve.eval(t0), |chunk, ps, rows| {
+            curve.eval_many(chunk, ps);
+            for (p, row) in ps.iter().zip(rows.chunks_exact_mut(width)) {
+                p.write_point(scalar_first, row);
+            }
+            fix(chunk, rows);
+        });
     })
 }
 

@@ -22,13 +22,13 @@ use numpy::PyUntypedArrayMethods;
 use pyo3::prelude::*;
 use spherekit::glam::{DQuat, DVec4};
 use spherekit::{
-    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GeodesicSpline, Manifold,
-    RotationLoop, UnitQuat, angular_velocity_acceleration_body, unflip,
+    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GeodesicSpline, Knots, Manifold,
+    RotationLoop, Side, UnitQuat, angular_velocity_acceleration_body, unflip,
 };
 
 use crate::batch;
 use crate::convert::{Times, float_repr, numbers, point_array, rows, value_error};
-use crate::curve::{Flat, What, evaluate, write_jets};
+use crate::curve::{What, evaluate_points, write_jets};
 
 /// The keys as unit quaternions from rows `[x, y, z, w]` (`[w, x, y, z]` with `scalar_first`),
 /// canonicalised (shortest rotations, [`unflip`]), and which of them [`unflip`] negated.
@@ -80,8 +80,8 @@ fn keys(quats: &Bound<'_, PyAny>, scalar_first: bool) -> PyResult<(Vec<UnitQuat>
 /// the segment scipy picks for `t`. The curve is built on the canonicalised keys `kᵢ = ±rᵢ`
 /// and is continuous, so on segment `i` it is the continuous lift `kᵢ·exp(vᵢ(t)/2)` of the
 /// same rotations: scipy's quaternion is the curve's times the sign of `kᵢ` against `rᵢ`. The
-/// choice is per segment, `O(1)` per sample for sorted times (the segment search starts from
-/// the previous sample's), and nothing at all when no key was negated.
+/// segment is found as the curves find theirs ([`Knots`]: `O(1)` per sample for increasing
+/// times, a binary search otherwise), and nothing is done when no key was negated.
 pub(crate) struct Signs {
     /// `negated[i]`: key `i` as given is `−kᵢ`; `None` when no key is.
     negated: Option<Vec<bool>>,
@@ -100,44 +100,30 @@ impl Signs {
     }
 
     /// Negates the quaternion rows (`rows`, 4 numbers each) at the parameters `ts` whose
-    /// segment of `knots` starts at a negated key. `right`: the segment of a knot is the one
-    /// it starts (scipy's `RotationSpline`, `searchsorted(side="right") − 1`), else the one it
-    /// ends (scipy's `Slerp`, `side="left"`); before the first knot the first segment, after
-    /// the last one the last.
-    fn apply(&self, knots: &[f64], ts: &[f64], right: bool, rows: &mut [f64]) {
+    /// segment of `knots` starts at a negated key. With [`Side::Right`] the segment of a knot
+    /// is the one it starts (scipy's `RotationSpline`, `searchsorted(side="right") − 1`), with
+    /// [`Side::Left`] the one it ends (scipy's `Slerp`); before the first knot the first
+    /// segment, after the last one the last.
+    fn apply(&self, knots: &Knots, ts: &[f64], side: Side, rows: &mut [f64]) {
         let Some(negated) = &self.negated else {
             return;
         };
+        let k = knots.as_slice();
         let mut hint = 0;
         for (&t, row) in ts.iter().zip(rows.chunks_exact_mut(4)) {
-            let i = segment(knots, t, right, &mut hint);
-            if negated[i] {
+            // From the previous sample's segment when `t` is before the end of the next one
+            // (`locate_from` then steps at most once); a binary search otherwise, where
+            // `locate_from` would step through every segment in between.
+            (hint, _) = if k.get(hint + 2).is_some_and(|&end| t < end) {
+                knots.locate_from(t, side, hint)
+            } else {
+                knots.locate(t, side)
+            };
+            if negated[hint] {
                 row.iter_mut().for_each(|x| *x = -*x);
             }
         }
     }
-}
-
-/// The segment `i` (between `knots[i]` and `knots[i + 1]`) of `t` for [`Signs::apply`],
-/// clamped to the segments there are; `hint` is the previous answer, tried first together with
-/// the segment after it.
-fn segment(knots: &[f64], t: f64, right: bool, hint: &mut usize) -> usize {
-    let before = |k: f64| if right { k <= t } else { k < t };
-    let last = knots.len().saturating_sub(2);
-    let holds = |i: usize| (i == 0 || before(knots[i])) && (i == last || !before(knots[i + 1]));
-    let h = (*hint).min(last);
-    let i = if holds(h) {
-        h
-    } else if h < last && holds(h + 1) {
-        h + 1
-    } else {
-        knots
-            .partition_point(|&k| before(k))
-            .saturating_sub(1)
-            .min(last)
-    };
-    *hint = i;
-    i
 }
 
 /// `t` taken into the period `[t0, t1)` as [`Extrapolate::Cycle`] takes it (the same
@@ -173,7 +159,7 @@ fn rate(v: Option<Vec<f64>>, name: &str) -> PyResult<Option<spherekit::glam::DVe
 pub(crate) struct PyCubicRotations {
     curve: Cubic,
     /// The key times (closed: and the time of the return to the first key).
-    times: Vec<f64>,
+    knots: Knots,
     /// The number of keys.
     n: usize,
     /// scipy's signs of the quaternions written.
@@ -246,26 +232,16 @@ impl PyCubicRotations {
     /// them. A closed spline's quaternions are periodic: `t` is taken into `[t₀, t_n)` first
     /// (as [`Extrapolate::Cycle`] does, the same bits) and its segment found there.
     fn quaternions(&self, ts: &[f64], scalar_first: bool) -> Vec<f64> {
-        let [t0, t1] = self.curve.domain();
-        let closed = matches!(self.curve, Cubic::Closed(_));
-        let slot = self.curve.spline().eval(t0);
-        batch::split(ts, 4, |ts, out| {
-            let mut taken = Vec::new();
-            batch::by_chunks(ts, out, 4, t0, slot, |chunk, ps, rows| {
-                let chunk = if closed {
-                    taken.clear();
-                    taken.extend(chunk.iter().map(|&t| into_period(t, t0, t1)));
-                    taken.as_slice()
-                } else {
-                    chunk
-                };
-                with_cubic!(self.curve, |c| c.eval_many(chunk, ps));
-                for (p, row) in ps.iter().zip(rows.chunks_exact_mut(4)) {
-                    p.write_point(scalar_first, row);
-                }
-                self.signs.apply(&self.times, chunk, true, rows);
-            });
-        })
+        let fix =
+            |ts: &[f64], rows: &mut [f64]| self.signs.apply(&self.knots, ts, Side::Right, rows);
+        match &self.curve {
+            Cubic::Open(c) => evaluate_points(c, ts, 4, scalar_first, fix),
+            Cubic::Closed(c) => {
+                let [t0, t1] = c.domain();
+                let taken: Vec<f64> = ts.iter().map(|&t| into_period(t, t0, t1)).collect();
+                evaluate_points(c, &taken, 4, scalar_first, fix)
+            }
+        }
     }
 
     /// The body-frame angular rates `2·q̄·q′` at `ts`, from the point and velocity alone
@@ -368,7 +344,7 @@ impl PyCubicRotations {
         }
         let n = keys.len();
         let knots = times.clone();
-        let curve = py
+        let built = py
             .detach(|| {
                 if closed {
                     let build = |keys, knots| CubicSpline::try_new(keys, knots, end, true);
@@ -381,8 +357,8 @@ impl PyCubicRotations {
             })
             .map_err(|e| value_error(e.to_string()))?;
         Ok(Self {
-            curve,
-            times,
+            curve: built,
+            knots: Knots::try_new(times).map_err(|e| value_error(e.to_string()))?,
             n,
             signs,
         })
@@ -427,7 +403,7 @@ impl PyCubicRotations {
         {
             write_jets(&[jet], what, false, width, &mut out);
             if what == What::Point {
-                self.signs.apply(&self.times, &[t], true, &mut out);
+                self.signs.apply(&self.knots, &[t], Side::Right, &mut out);
             }
         }
         rows(py, out, width, true)
@@ -455,6 +431,8 @@ impl PyCubicRotations {
 #[pyclass(module = "spherekit._spherekit", name = "_SlerpRotations", frozen)]
 pub(crate) struct PySlerpRotations {
     spline: GeodesicSpline<UnitQuat>,
+    /// The key times.
+    knots: Knots,
     /// scipy's signs of the quaternions written.
     signs: Signs,
 }
@@ -472,9 +450,14 @@ impl PySlerpRotations {
         let times = numbers(times, "times")?;
         let (keys, signs) = keys(quats, scalar_first)?;
         let spline = py
-            .detach(|| GeodesicSpline::try_new(keys, Some(times)))
+            .detach(|| GeodesicSpline::try_new(keys, Some(times.clone())))
             .map_err(|e| value_error(e.to_string()))?;
-        Ok(Self { spline, signs })
+        let knots = Knots::try_new(times).map_err(|e| value_error(e.to_string()))?;
+        Ok(Self {
+            spline,
+            knots,
+            signs,
+        })
     }
 
     /// Quaternions `[x, y, z, w]` (`[w, x, y, z]` with `scalar_first`) at `t` with scipy's
@@ -498,9 +481,10 @@ impl PySlerpRotations {
             )));
         }
         let data = py.detach(|| {
-            let mut data = evaluate(&self.spline, &ts, What::Point, 4, scalar_first);
-            self.signs.apply(self.spline.knots(), &ts, false, &mut data);
-            data
+            let fix = |ts: &[f64], rows: &mut [f64]| {
+                self.signs.apply(&self.knots, ts, Side::Left, rows);
+            };
+            evaluate_points(&self.spline, &ts, 4, scalar_first, fix)
         });
         rows(py, data, 4, times.scalar)
     }
