@@ -415,10 +415,13 @@ impl Document {
     fn apply(&mut self, doc: Map<String, Value>) -> Result<(), EditError> {
         let text = Value::Object(doc.clone()).to_string();
         let mut scene = Scene::from_json(&text)?;
-        let same_space = scene.space == self.scene.space;
+        // The scene-level fields that say how every curve's points are read: the sphere, and
+        // on S³ the quaternion order (a curve's own `canonicalize` is one of its fields).
+        let same_reading =
+            scene.space == self.scene.space && scene.scalar_last == self.scene.scalar_last;
         let mut fresh: Vec<Option<BuiltCurve>> = Vec::with_capacity(scene.curves.len());
         for i in 0..scene.curves.len() {
-            let unchanged = same_space
+            let unchanged = same_reading
                 && i < self.scene.curves.len()
                 && curve_fields(&doc, i) == curve_fields(&self.doc, i);
             if unchanged {

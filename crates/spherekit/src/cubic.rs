@@ -194,6 +194,56 @@ impl CubicEnd<DVec4> {
     }
 }
 
+/// # Construction from rotations
+impl CubicSpline<UnitQuat> {
+    /// The open spline through rotations at the times `knots` (default `0, 1, 2, …`) whatever
+    /// the signs of their quaternions: the keys are canonicalised first
+    /// ([`unflip`](crate::unflip): each step the shorter rotation, the first key as given), so
+    /// `q` and `−q` give the same curve. With [`CubicEnd::Scipy`] this is scipy's
+    /// `RotationSpline(times, rotations)`, which works with the relative rotation vectors
+    /// between neighbours and so never sees key signs. A clamped end velocity belongs to its key
+    /// as given and is negated with it ([`CubicEnd::clamped_angular_body`] on the keys as
+    /// given is right either way).
+    ///
+    /// [`try_new`](Self::try_new) takes the keys as points of S³, signs included. For a closed
+    /// loop of rotations see [`RotationLoop`](crate::RotationLoop).
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new) for an open curve.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{CubicEnd, CubicSpline, Curve, UnitQuat};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let keys: Vec<UnitQuat> = (0..4)
+    ///     .map(|k| UnitQuat::from_axis_angle(DVec3::new(1.0, 2.0, f64::from(k)), 0.7 * f64::from(k)).unwrap())
+    ///     .collect();
+    /// let mut flipped = keys.clone();
+    /// flipped[2] = -flipped[2];
+    /// let a = CubicSpline::try_new_rotations(keys, None, CubicEnd::Scipy).unwrap();
+    /// let b = CubicSpline::try_new_rotations(flipped, None, CubicEnd::Scipy).unwrap();
+    /// assert_eq!(a.eval(1.5), b.eval(1.5));
+    /// ```
+    pub fn try_new_rotations(
+        mut keys: Vec<UnitQuat>,
+        knots: Option<Vec<f64>>,
+        end: CubicEnd<DVec4>,
+    ) -> Result<Self, SplineError> {
+        let last = keys.last().copied();
+        crate::unflip(&mut keys);
+        let end = match (end, last, keys.last()) {
+            (CubicEnd::Clamped { start, end }, Some(given), Some(&now)) if given != now => {
+                CubicEnd::Clamped { start, end: -end }
+            }
+            (end, ..) => end,
+        };
+        Self::try_new(keys, knots, end, false)
+    }
+}
+
 /// How the Newton solve of a [`CubicSpline`] ended.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CubicSolveInfo {
@@ -285,7 +335,8 @@ impl<P: Manifold> CubicSpline<P> {
     /// one more time than points, the time at which the curve is back at the first point).
     ///
     /// Keys are used as given; on S³ call [`unflip`](crate::unflip) first for the shortest
-    /// rotations (scipy's convention). Consecutive identical keys are allowed (a segment with
+    /// rotations (scipy's convention), or build from rotations with
+    /// [`try_new_rotations`](CubicSpline::try_new_rotations), which does. Consecutive identical keys are allowed (a segment with
     /// `Log = 0`: the curve leaves the key and comes back to it).
     ///
     /// # Errors

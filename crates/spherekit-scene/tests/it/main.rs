@@ -12,6 +12,7 @@
 mod batch;
 mod closed;
 mod corner_params;
+mod edit;
 mod registry;
 mod scene_sample;
 #[path = "../support/cases.rs"]

@@ -227,15 +227,29 @@ fn floats(v: &serde_json::Value) -> Vec<f64> {
 /// the case — the size of scipy's own distance from its fixed point (`converged_to`, up to
 /// 3.2e-11: scipy stops its iteration at a change of 1e-9). Run with `-- --nocapture` to print.
 #[test]
-fn scipy_agreement() {
+fn scipy_agreement_whatever_the_key_signs() {
     let text = include_str!("../data/rotation_spline_scipy.json");
     let data: serde_json::Value = serde_json::from_str(text).unwrap();
     let (mut worst_angle, mut worst_rate, mut worst_acc) = (0.0_f64, 0.0_f64, 0.0_f64);
     for case in data["cases"].as_array().unwrap() {
+        // Rotations with random quaternion signs: scipy never sees them, nor does the curve.
         let mut keys: Vec<UnitQuat> = case["keys"].as_array().unwrap().iter().map(wxyz).collect();
-        unflip(&mut keys);
+        let mut rng = Rng::new(keys.len() as u64);
+        for q in &mut keys {
+            if rng.uniform() < 0.5 {
+                *q = -*q;
+            }
+        }
         let times = floats(&case["times"]);
-        let c = CubicSpline::try_new(keys, Some(times), CubicEnd::Scipy, false).unwrap();
+        let c = CubicSpline::try_new_rotations(keys.clone(), Some(times.clone()), CubicEnd::Scipy)
+            .unwrap();
+        unflip(&mut keys);
+        let unflipped = CubicSpline::try_new(keys, Some(times), CubicEnd::Scipy, false).unwrap();
+        assert_eq!(
+            c.eval(0.3),
+            unflipped.eval(0.3),
+            "the curve of the keys unflipped"
+        );
         let ts = floats(&case["ts"]);
         let quats: Vec<UnitQuat> = case["quats"].as_array().unwrap().iter().map(wxyz).collect();
         let rates: Vec<DVec3> = case["rates"].as_array().unwrap().iter().map(vec3).collect();
@@ -790,4 +804,30 @@ fn batch_equals_scalar_and_the_domain_clamps() {
     assert_eq!(c.key_velocities().len(), 20);
     assert_eq!(c.end(), &CubicEnd::Scipy);
     assert!(!c.closed());
+}
+
+/// Built from rotations, a clamped end's velocity stays the given angular velocity when the
+/// canonicalisation flips the last key (the velocity is negated with its key).
+#[test]
+fn rotations_keep_clamped_angular_velocities_when_keys_flip() {
+    let keys: Vec<UnitQuat> = (0..4)
+        .map(|k| UnitQuat::from_axis_angle(DVec3::new(0.3, 1.0, 0.5), 0.9 * f64::from(k)).unwrap())
+        .collect();
+    let (w0, w1) = (DVec3::new(0.2, -0.1, 0.4), DVec3::new(-0.3, 0.5, 0.1));
+    for flip_last in [false, true] {
+        let mut given = keys.clone();
+        if flip_last {
+            given[3] = -given[3];
+        }
+        let end = CubicEnd::clamped_angular_body(given[0], w0, given[3], w1);
+        let c = CubicSpline::try_new_rotations(given, None, end).unwrap();
+        for (t, w) in [(0.0, w0), (3.0, w1)] {
+            let j = c.jet_at(t, if t == 0.0 { Side::Right } else { Side::Left });
+            let (rate, _) = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
+            assert!(
+                (rate - w).length() <= 1e-12,
+                "flip {flip_last}, t = {t}: {rate} vs {w}"
+            );
+        }
+    }
 }
