@@ -125,9 +125,8 @@ fn spline_message(e: &SplineError) -> String {
             "points[{first}] and points[{last}] coincide: no unique circle passes through points[{first}], points[{middle}] and points[{last}] of the loop"
         ),
         SplineError::TimingNotClosed { .. } => format!("params.timing: {e}"),
-        SplineError::ThroughOrigin { index } => format!(
-            "points[{index}] to points[{}]: the ambient curve of this segment may pass through the origin, where normalising has no direction (the keys around it are too far apart; for quaternions, canonicalize them)",
-            index + 1
+        SplineError::ThroughOrigin { index, next } => format!(
+            "points[{index}] to points[{next}]: the ambient curve of this segment may pass through the origin, where normalising has no direction (the keys around it are too far apart; for quaternions, canonicalize them)"
         ),
         // Errors added to the core later: its own words, which name no field.
         e => e.to_string(),

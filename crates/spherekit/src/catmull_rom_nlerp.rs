@@ -9,7 +9,7 @@ use crate::ambient::Ambient;
 use crate::ambient::VecN;
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
-use crate::geodesic::check_chain;
+use crate::geodesic::{MIN_LOOP_POINTS, check_chain, check_loop};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
 
@@ -64,8 +64,11 @@ use crate::manifold::Manifold;
 #[derive(Clone, Debug)]
 pub struct CatmullRomNlerp<P: Manifold> {
     points: Vec<P>,
+    /// `c₋₁ … cₙ₊₁` as vectors (closed: the keys with the last before them and the first two
+    /// after them).
     vectors: Vec<P::Vector>,
     knots: Knots,
+    closed: bool,
     /// Per segment `hᵢ/(tᵢ₊₁ − tᵢ₋₁)` and `hᵢ/(tᵢ₊₂ − tᵢ)`.
     ratios: Vec<[f64; 2]>,
 }
@@ -73,12 +76,19 @@ pub struct CatmullRomNlerp<P: Manifold> {
 /// The tangent ratios `hᵢ/(tᵢ₊₁ − tᵢ₋₁)`, `hᵢ/(tᵢ₊₂ − tᵢ)` of every segment of the points
 /// `vectors` (`c₋₁ … cₙ₊₁`) at `knots`, after the check that no Bézier point of a segment is on
 /// the far side of the origin (normalising would pass through it).
-fn ratios<V: Ambient>(vectors: &[V], knots: &Knots) -> Result<Vec<[f64; 2]>, SplineError> {
+fn ratios<V: Ambient>(
+    vectors: &[V],
+    knots: &Knots,
+    closed: bool,
+) -> Result<Vec<[f64; 2]>, SplineError> {
     let k = knots.as_slice();
     let n = k.len() - 1;
     let width = |i: usize| knots.width(i);
-    // The spans tᵢ₊₁ − tᵢ₋₁ of the keys c₀ … cₙ, with the end intervals mirrored.
+    // The spans tᵢ₊₁ − tᵢ₋₁ of the keys c₀ … cₙ, with the end intervals mirrored (open) or
+    // the first and the last one around the seam (closed).
+    let seam = width(0) + width(n - 1);
     let span = |i: usize| match i {
+        _ if closed && (i == 0 || i == n) => seam,
         0 => 2.0 * width(0),
         _ if i == n => 2.0 * width(n - 1),
         _ => k[i + 1] - k[i - 1],
@@ -103,7 +113,14 @@ fn ratios<V: Ambient>(vectors: &[V], knots: &Knots) -> Result<Vec<[f64; 2]>, Spl
             .map(|x| x.dot(&m))
             .fold(f64::INFINITY, f64::min);
         if lowest.is_nan() || lowest <= 1e-12 * m.length() {
-            return Err(SplineError::ThroughOrigin { index: i + 1 });
+            // The segment's keys in the points given (closed: no steering point first, and the
+            // last segment returns to the first key).
+            let (index, next) = if closed {
+                (i, (i + 1) % n)
+            } else {
+                (i + 1, i + 2)
+            };
+            return Err(SplineError::ThroughOrigin { index, next });
         }
         ratios.push(r);
     }
@@ -112,9 +129,13 @@ fn ratios<V: Ambient>(vectors: &[V], knots: &Knots) -> Result<Vec<[f64; 2]>, Spl
 
 /// [`ratios`] of the vectors as vectors of `VecN` (the wasm build's one copy).
 #[cfg(any(test, target_arch = "wasm32"))]
-fn ratios_in_vecn<V: Ambient>(vectors: &[V], knots: &Knots) -> Result<Vec<[f64; 2]>, SplineError> {
+fn ratios_in_vecn<V: Ambient>(
+    vectors: &[V],
+    knots: &Knots,
+    closed: bool,
+) -> Result<Vec<[f64; 2]>, SplineError> {
     let vectors: Vec<VecN> = vectors.iter().map(|v| VecN::new(v.to_vec())).collect();
-    ratios(&vectors, knots)
+    ratios(&vectors, knots, closed)
 }
 
 /// The weights of `cᵢ₋₁, cᵢ, cᵢ₊₁, cᵢ₊₂` in `c(τ)` and their first two `τ`-derivatives, for the
@@ -160,21 +181,70 @@ impl<P: Manifold> CatmullRomNlerp<P> {
         check_chain(&points, 4)?;
         let knots = Knots::or_uniform(knots, points.len() - 2)?;
         let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
+        Self::build(points, vectors, knots, false)
+    }
+
+    /// Builds the closed loop through `points` = `c₀ … c_{m−1}` (m ≥ 3), every point a key, at
+    /// the `m + 1` knots `t₀ … t_m` (default `0, 1, …, m`; `t_m` is the time of the return to
+    /// `c₀`): the open construction of the periodic sequence, `c₋₁ = c_{m−1}`, `c_m = c₀`,
+    /// `c_{m+1} = c₁`, with the tangent at the seam from the knot intervals on both sides of
+    /// it, `T₀ = (c₁ − c_{m−1})/(t₁ − t₀ + t_m − t_{m−1})`. C¹ at the seam as at every key.
+    ///
+    /// # Errors
+    ///
+    /// [`SplineError::TooFewPoints`] for fewer than 3 points; [`SplineError::Antipodal`] for
+    /// antipodal consecutive points and [`SplineError::AntipodalClosing`] for an antipodal
+    /// last and first point; [`SplineError::ThroughOrigin`] (index of the segment's first key)
+    /// where the ambient curve could pass through 0; the knot errors of
+    /// [`Knots::or_uniform`] (`m + 1` knots).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::{continuity, CatmullRomNlerp, Curve, Manifold, S2Point};
+    /// use spherekit::glam::DVec3;
+    ///
+    /// let p = |x: f64, y: f64, z: f64| S2Point::try_new(DVec3::new(x, y, z)).unwrap();
+    /// let ring = vec![p(1.0, 0.0, 0.5), p(0.0, 1.0, 0.5), p(-1.0, 0.0, 0.5), p(0.0, -1.0, 0.5)];
+    /// let c = CatmullRomNlerp::try_new_closed(ring.clone(), None).unwrap();
+    /// assert_eq!(c.domain(), [0.0, 4.0]);
+    /// assert!(c.is_closed() && c.eval(4.0).dist(&ring[0]) < 1e-15);
+    /// assert!(continuity(&c).iter().all(|j| j.c1 < 1e-12)); // C¹ at the seam too
+    /// ```
+    pub fn try_new_closed(points: Vec<P>, knots: Option<Vec<f64>>) -> Result<Self, SplineError> {
+        check_loop(&points, MIN_LOOP_POINTS)?;
+        let m = points.len();
+        let knots = Knots::or_uniform(knots, m + 1)?;
+        let mut vectors: Vec<P::Vector> = Vec::with_capacity(m + 3);
+        vectors.push(points[m - 1].to_vector());
+        vectors.extend(points.iter().map(Manifold::to_vector));
+        vectors.push(points[0].to_vector());
+        vectors.push(points[1].to_vector());
+        Self::build(points, vectors, knots, true)
+    }
+
+    fn build(
+        points: Vec<P>,
+        vectors: Vec<P::Vector>,
+        knots: Knots,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
         // Natively in the point type's vectors; the wasm build checks every sphere's in `VecN`
         // (one copy of the code; the same bits, `tests::the_ratios_are_the_same_in_vecn`).
         #[cfg(not(target_arch = "wasm32"))]
-        let ratios = ratios(&vectors, &knots)?;
+        let ratios = ratios(&vectors, &knots, closed)?;
         #[cfg(target_arch = "wasm32")]
-        let ratios = ratios_in_vecn(&vectors, &knots)?;
+        let ratios = ratios_in_vecn(&vectors, &knots, closed)?;
         Ok(Self {
             points,
             vectors,
             knots,
+            closed,
             ratios,
         })
     }
 
-    /// The input points `c₋₁ … cₙ₊₁`.
+    /// The input points `c₋₁ … cₙ₊₁` (closed: the keys `c₀ … c_{m−1}`).
     #[must_use]
     pub fn points(&self) -> &[P] {
         &self.points
@@ -231,6 +301,10 @@ impl<P: Manifold> Curve for CatmullRomNlerp<P> {
         self.knots.as_slice()
     }
 
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+
     fn jet_at(&self, t: f64, side: Side) -> Jet<P> {
         let (i, tau) = self.knots.locate(t, side);
         self.jet_local(i, tau)
@@ -262,8 +336,8 @@ mod tests {
             let uneven: Vec<f64> = (0..n).map(|i| (i * i) as f64 * 0.3 + i as f64).collect();
             let mut outcomes = [0, 0];
             for knots in [Knots::uniform(n), Knots::try_new(uneven).unwrap()] {
-                let native = ratios(&vectors, &knots);
-                let in_vecn = ratios_in_vecn(&vectors, &knots);
+                let native = ratios(&vectors, &knots, false);
+                let in_vecn = ratios_in_vecn(&vectors, &knots, false);
                 outcomes[usize::from(native.is_err())] += 1;
                 assert_eq!(format!("{native:?}"), format!("{in_vecn:?}"), "{points:?}");
             }

@@ -214,6 +214,8 @@ pub enum SplineError {
     ThroughOrigin {
         /// Index of the segment's first key in the input points.
         index: usize,
+        /// Index of its last key (`index + 1`, or 0 for the closing segment of a loop).
+        next: usize,
     },
 }
 
@@ -313,10 +315,9 @@ impl fmt::Display for SplineError {
                 let which = if *start { "start" } else { "end" };
                 write!(f, "the {which} velocity {reason}")
             }
-            Self::ThroughOrigin { index } => write!(
+            Self::ThroughOrigin { index, next } => write!(
                 f,
-                "the segment from point {index} to point {}: its ambient curve may pass through the origin, where normalising has no direction (the keys around it are too far apart; for quaternions, unflip them)",
-                index + 1
+                "the segment from point {index} to point {next}: its ambient curve may pass through the origin, where normalising has no direction (the keys around it are too far apart; for quaternions, unflip them)"
             ),
         }
     }

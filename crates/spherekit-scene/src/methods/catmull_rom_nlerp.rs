@@ -13,7 +13,7 @@ use crate::scene::Input;
 pub(crate) static METHOD: Method = Method {
     id: "catmull-rom-nlerp",
     type_name: "CatmullRomNlerp",
-    summary: "Euclidean Catmull-Rom of the points in ℝ^(m+1) (ℝ⁴ for quaternions), normalised: not constant speed, off the great circles",
+    summary: "Euclidean Catmull-Rom of the points in ℝ^(m+1) (ℝ⁴ for quaternions), normalised: not constant speed, off the great circles (first and last points steer the ends; closed: every point a key)",
     continuity: "C¹",
     source: "Catmull & Rom (1974); normalised in ℝ⁴ as in Gortler (2012), §9.3",
     spheres: Spheres::All,
@@ -21,16 +21,20 @@ pub(crate) static METHOD: Method = Method {
     min_points: 4,
     interpolates: false,
     single_piece: false,
-    closes: false,
+    closes: true,
     params: &[],
     build,
 };
 
 fn build(input: Input<'_>) -> Result<BuiltCurve, SceneError> {
-    let knots = input.knots;
+    let (knots, closed) = (input.knots, input.closed);
     input.params.finish()?;
     Ok(on_every_sphere!(input.points, |p| {
-        let curve = CatmullRomNlerp::try_new(p.clone(), knots)?;
+        let curve = if closed {
+            CatmullRomNlerp::try_new_closed(p.clone(), knots)?
+        } else {
+            CatmullRomNlerp::try_new(p.clone(), knots)?
+        };
         Built::new(curve, p).with_order(1)
     }))
 }

@@ -19,9 +19,9 @@ use core::f64::consts::TAU;
 use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSolver, BetaSpline, BsplineKim, CatmullRom,
-    CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, Curve, GammaSpline, Gammas,
-    GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad, UnitQuat,
-    continuity,
+    CatmullRomNlerp, CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, Curve, GammaSpline,
+    Gammas, GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad,
+    UnitQuat, continuity,
 };
 
 use crate::support::{Rng, check_derivatives, check_derivatives_at};
@@ -208,6 +208,47 @@ fn catmull_rom_loops_have_periodic_tangents_and_are_c1_at_the_seam() {
         let c = CatmullRom::try_new_closed(s.clone(), None).unwrap();
         check_loop(&c, Some((&s, &uniform(m + 1))), Smooth::C1);
     }
+}
+
+/// The normalised Euclidean Catmull-Rom closes too: C¹ at the seam as at every key, on every
+/// sphere, and with uniform knots it is the open spline of the wrapped sequence
+/// `c_{m−1}, c₀ … c_{m−1}, c₀, c₁` (whose end steering points are the loop's neighbours).
+#[test]
+fn catmull_rom_nlerp_loops_are_c1_at_the_seam() {
+    let mut rng = Rng::new(14);
+    for m in [3, 6] {
+        let k = times(&mut rng, m + 1);
+        let p = ring_s2(&mut rng, m);
+        let c = CatmullRomNlerp::try_new_closed(p.clone(), Some(k.clone())).unwrap();
+        check_loop(&c, Some((&p, &k)), Smooth::C1);
+        let q = ring_s3(&mut rng, m);
+        let c = CatmullRomNlerp::try_new_closed(q.clone(), Some(k.clone())).unwrap();
+        check_loop(&c, Some((&q, &k)), Smooth::C1);
+        let s = ring_s5(&mut rng, m);
+        let c = CatmullRomNlerp::try_new_closed(s.clone(), None).unwrap();
+        check_loop(&c, Some((&s, &uniform(m + 1))), Smooth::C1);
+    }
+    let p = ring_s2(&mut rng, 5);
+    let closed = CatmullRomNlerp::try_new_closed(p.clone(), None).unwrap();
+    let mut open_points = vec![p[4]];
+    open_points.extend_from_slice(&p);
+    open_points.extend([p[0], p[1]]);
+    let open = CatmullRomNlerp::try_new(open_points, None).unwrap();
+    for j in 0..=50 {
+        let t = 5.0 * f64::from(j) / 50.0;
+        assert!(closed.eval(t).dist(&open.eval(t)) < 1e-15, "t = {t}");
+    }
+    // Bad loops: too few points, an antipodal seam.
+    assert!(matches!(
+        CatmullRomNlerp::try_new_closed(p[..2].to_vec(), None),
+        Err(SplineError::TooFewPoints { min: 3, got: 2 })
+    ));
+    let mut seam = p[..3].to_vec();
+    seam.push(S2Point::try_new(-p[0].as_dvec3()).unwrap());
+    assert!(matches!(
+        CatmullRomNlerp::try_new_closed(seam, None),
+        Err(SplineError::AntipodalClosing)
+    ));
 }
 
 /// The first key's tangent is the central difference of its periodic neighbours: the loop's

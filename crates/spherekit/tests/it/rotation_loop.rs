@@ -18,9 +18,9 @@ use core::f64::consts::TAU;
 
 use spherekit::glam::DVec3;
 use spherekit::{
-    ArcBlend, BetaParams, BetaSpline, BsplineKim, CatmullRom, CornerBlendS3, CubicEnd, CubicSpline,
-    Curve, Extrapolate, Extrapolated, GammaSpline, Gammas, GeodesicSpline, Manifold, NlerpSpline,
-    RotationLoop, Side, SplineError, Squad, UnitQuat, continuity, unflip,
+    ArcBlend, BetaParams, BetaSpline, BsplineKim, CatmullRom, CatmullRomNlerp, CornerBlendS3,
+    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GammaSpline, Gammas, GeodesicSpline,
+    Manifold, NlerpSpline, RotationLoop, Side, SplineError, Squad, UnitQuat, continuity, unflip,
 };
 
 use crate::support::{Rng, check_derivatives};
@@ -77,6 +77,13 @@ fn constructions() -> Vec<(&'static str, Build, bool, bool, Smooth)> {
         (
             "catmull-rom (quaternion)",
             |k, t| boxed(CatmullRom::try_new_quaternion_closed(k, t)),
+            true,
+            true,
+            Smooth::C1,
+        ),
+        (
+            "catmull-rom-nlerp",
+            |k, t| boxed(CatmullRomNlerp::try_new_closed(k, t)),
             true,
             true,
             Smooth::C1,
