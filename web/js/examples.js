@@ -35,6 +35,7 @@ const EXAMPLES = {
   cubic_s2: ['Cubic spline (S²)', 'A C² spline through five points at their times.'],
   cubic_s3: ['Cubic rotation spline (scipy ends)', 'The C² rotation spline with scipy’s RotationSpline end conditions.'],
   cubic_s3_closed: ['Closed cubic rotation spline', 'A periodic C² loop through four orientations.'],
+  cubic_s3_orbit: ['A 360° camera orbit', 'Eight keys 45° of yaw apart with a pitch wobble, closed: one full turn is a loop of rotations (its quaternions end at −q₀, the same rotation), turning at a steady rate all the way round.'],
   compare_s3_squad_catmull_bspline_arcblend: ['Four S³ methods compared', 'Squad, Catmull–Rom, Kim’s B-spline and the arc blend through the same keys.'],
   figure_legend_labels_s2: ['Curve labels in the legend', 'Three methods through the same points, labelled.'],
   figure_omega_s2: ['Velocity components (S²)', 'The plot shows p′ in x, y and z as well as the speed.'],
