@@ -299,7 +299,7 @@ impl CurveSpec {
                 if self.canonicalize {
                     unflip(&mut keys);
                     // A loop of an odd number of full turns: closed in SO(3), at −q₀.
-                    if self.closed && rotation_loop::closes_at_antipode(&keys) {
+                    if self.closed && spherekit::closes_at_antipode(&keys) {
                         let built = rotation_loop::build(
                             self.method,
                             keys,

@@ -25,7 +25,7 @@ use core::fmt;
 use serde_json::{Value, json};
 use spherekit::glam::DVec3;
 use spherekit::{
-    Ambient, Jet, SolveError, UnitQuat, angular_velocity_acceleration,
+    Ambient, Jet, PointError, SolveError, UnitQuat, angular_velocity_acceleration,
     angular_velocity_acceleration_body,
 };
 use spherekit_render::{
@@ -143,8 +143,13 @@ pub fn key_to_axis_angle(key: &[f64]) -> Result<Vec<f64>, JsError> {
 /// An [`InputError`] for a zero or non-finite axis or angle.
 #[wasm_bindgen]
 pub fn axis_angle_to_key(degrees: f64, x: f64, y: f64, z: f64) -> Result<Vec<f64>, JsError> {
-    let q = UnitQuat::from_axis_angle(DVec3::new(x, y, z), degrees.to_radians())
-        .map_err(|e| InputError::Coords(format!("axis {}", e.predicate())))?;
+    let q =
+        UnitQuat::from_axis_angle(DVec3::new(x, y, z), degrees.to_radians()).map_err(
+            |e| match e {
+                PointError::NonFiniteAngle => InputError::Coords(format!("angle: {e}")),
+                e => InputError::Coords(format!("axis {}", e.predicate())),
+            },
+        )?;
     Ok(q.to_wxyz().to_vec())
 }
 
