@@ -74,8 +74,8 @@
 //!   term: the linear part is solved at the first iterate, so the residual there is `T(wₖ)`,
 //!   computed and eliminated (from the last row up: the pivots of that direction are scalars
 //!   too) as the linear step's backward substitution yields each `Vₖ`, and substituted a row
-//!   ahead of the next sweep. It takes `V` about 30× closer to the solution, so Newton's first
-//!   factorisation starts nearer and the chord steps converge faster;
+//!   ahead of the next sweep. Newton's first factorisation then starts nearer the solution and
+//!   the chord steps converge faster;
 //! - the Jacobian at that point (`DT = 2B(u, ·)` added to the diagonal blocks) is factorised
 //!   once, in O(n) (bordered for the cyclic case), and reused for chord steps while the
 //!   residual falls by 10× per step, refactorised otherwise;
@@ -104,11 +104,7 @@
 //! `4/h` terms, `2/h`, `2/(h·sinc θ)`, and `|B(a, b)| ≤ (|κ| + |sinc′|)|a||b|` for the change of
 //! `T`), and `ω` is at most the largest `|Wₖ|`, so the relative residual at `V` is at most the
 //! updated one over `1 − ω·maxₖ Lₖ/|termsₖ(V̄)|` (a fresh evaluation when that is not
-//! positive). For the benchmarks' 1 000 random rotations of 0.4–1.2 rad at unit spacing it
-//! takes the linear step and its correction, one Newton step and one chord step (residuals
-//! 1.4 at `V = 0`, then 1.3e-8 and 5.4e-13, the last bound 0.4 % above the updated residual);
-//! without the correction it took three chord steps (1.7e-2 at the first factorisation, then
-//! 1.3e-5, 1.5e-8, 1.8e-11, 2.6e-14).
+//! positive). The steps and residuals on the benchmark keys are in `BENCHMARKS.md`.
 //!
 //! # Sources
 //!
