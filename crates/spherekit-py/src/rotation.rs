@@ -108,17 +108,11 @@ impl Signs {
         let Some(negated) = &self.negated else {
             return;
         };
-        let k = knots.as_slice();
         let mut hint = 0;
         for (&t, row) in ts.iter().zip(rows.chunks_exact_mut(4)) {
-            // From the previous sample's segment when `t` is before the end of the next one
-            // (`locate_from` then steps at most once); a binary search otherwise, where
-            // `locate_from` would step through every segment in between.
-            (hint, _) = if k.get(hint + 2).is_some_and(|&end| t < end) {
-                knots.locate_from(t, side, hint)
-            } else {
-                knots.locate(t, side)
-            };
+            // From the previous sample's segment (a step for increasing times, a binary search
+            // for a jump).
+            (hint, _) = knots.locate_from(t, side, hint);
             if negated[hint] {
                 row.iter_mut().for_each(|x| *x = -*x);
             }
