@@ -167,8 +167,7 @@ fn load(scene: &str) -> Result<(Scene, Vec<BuiltCurve>), SceneError> {
 /// The CLI's message for a bad scene or view.
 #[wasm_bindgen]
 pub fn validate(scene: &str) -> Result<(), JsError> {
-    let (scene, _) = load(scene).map_err(js)?;
-    scene.view().map_err(js)?;
+    load(scene).map_err(js)?;
     Ok(())
 }
 
@@ -307,15 +306,6 @@ fn straight_rgba(pixmap: Pixmap) -> Vec<u8> {
     pixmap.take()
 }
 
-/// What a laid-out figure depends on: the scene text without `view.camera`, and the size.
-fn layout_key(scene: &str, size: u32) -> String {
-    let mut v: Value = serde_json::from_str(scene).unwrap_or(Value::Null);
-    if let Some(view) = v.get_mut("view").and_then(Value::as_object_mut) {
-        view.remove("camera");
-    }
-    format!("{size} {v}")
-}
-
 /// The page's handle on one scene: the edited [`Document`] and the last rendered frame.
 ///
 /// Edits go through [`Document`] (checked exactly like a pasted scene, rebuilding only the
@@ -330,9 +320,9 @@ pub struct Playground {
     rgba: Vec<u8>,
     /// Where the last rendered frame's plots put their axes.
     plots: Vec<PlotAxes>,
-    /// The last figure laid out, with its key (the scene without its camera, and the size):
-    /// turning the view renders it again without flattening or sampling.
-    prepared: Option<(String, Prepared)>,
+    /// The last figure laid out, with its key (the document's layout generation and the
+    /// size): turning the view renders it again without flattening or sampling.
+    prepared: Option<((u64, u32), Prepared)>,
     /// What the last failed edit's solver reported (see [`Playground::failure`]).
     failure: Option<SolveFailure>,
 }
@@ -590,10 +580,7 @@ impl Playground {
     /// toggles show these).
     #[must_use]
     pub fn view_options(&self) -> String {
-        // The scene's view was checked when it was set.
-        let Ok(view) = self.doc.scene().view() else {
-            return Value::Null.to_string();
-        };
+        let view = self.doc.scene().view();
         let plot = match view.plot {
             Plot::Speed => "speed",
             Plot::Omega => "omega",
@@ -641,14 +628,7 @@ impl Playground {
     ///
     /// Does not fail for a scene that was drawn.
     pub fn pin_camera(&mut self) -> Result<(), JsError> {
-        if self
-            .doc
-            .scene()
-            .view
-            .as_ref()
-            .and_then(|v| v.get("camera"))
-            .is_some()
-        {
+        if self.doc.scene().view().camera.is_some() {
             return Ok(());
         }
         self.set_view("camera", &json!(self.camera()).to_string())
@@ -911,7 +891,8 @@ impl Playground {
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
         let (scene, curves) = (self.doc.scene(), self.doc.curves());
-        let key = layout_key(&self.doc.to_json(), size);
+        // The layout is kept while the document's layout generation and the size are the same.
+        let key = (self.doc.layout_generation(), size);
         let prepared = match self.prepared.take() {
             Some((k, p)) if k == key => p,
             _ => prepare(scene, curves, size).map_err(js)?,
@@ -970,10 +951,7 @@ impl Playground {
     }
 
     fn normalized(&self) -> bool {
-        self.doc
-            .scene()
-            .view()
-            .is_ok_and(|v| v.plot_time == PlotTime::Normalized)
+        self.doc.scene().view().plot_time == PlotTime::Normalized
     }
 
     /// Curve `curve` and its parameter at `time` on the scene's time axis, clamped to its
@@ -995,10 +973,7 @@ impl Playground {
     }
 
     fn cam(&self) -> Camera {
-        // The scene's view was checked when it was set.
-        camera_of(self.doc.scene(), self.doc.curves()).unwrap_or(Camera {
-            orientation: UnitQuat::IDENTITY,
-        })
+        camera_of(self.doc.scene(), self.doc.curves())
     }
 
     /// Sphere coordinates of a point of ℝ³ in the scene's space (S¹ drops z).
