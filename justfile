@@ -108,7 +108,7 @@ fuzz seconds="600" target="all":
 
 # Build the wasm package into web/pkg (installs wasm-bindgen and wasm-opt when missing): the
 # crate for the browser in Cargo's `web` profile (the workspace Cargo.toml: the release profile
-# at opt-level "z" with LTO, one codegen unit, panics abort, symbols stripped; the renderer at
+# at opt-level "z" with LTO, one codegen unit, panics abort, no debug info; the renderer at
 # opt-level 3 for frame time), on the stable toolchain with the prebuilt standard library; its
 # JavaScript glue (`wasm-bindgen --target web`); `wasm-opt -Oz` for size; then
 # web/pkg/presets.json, the example menu, from the golden scenes (scripts/web_presets.py).
