@@ -14,8 +14,7 @@
 //!   curves an edit touched (a camera change only re-renders), and draws into a canvas.
 //!
 //! Every bad input gives a `JsError` whose message is the line the CLI prints after
-//! `error: `; a panic hook reports anything unexpected to the console (except in the release
-//! build of `just web`, which aborts on a panic at once: [`start`]).
+//! `error: `; a panic hook reports anything unexpected to the console ([`start`]).
 //!
 //! Coordinates follow the scene format: S² points `[x, y, z]`, S³ keys `[w, x, y, z]`. Screen
 //! positions are pixels of an image `size` pixels wide, as [`spherekit_render::render`] draws it.
@@ -69,14 +68,11 @@ impl fmt::Display for InputError {
 
 impl core::error::Error for InputError {}
 
-/// Installs the panic hook that reports a panic to the browser console (called on load).
-///
-/// Not in a build with `-C panic=immediate-abort` (`just web`'s): there a panic aborts at once
-/// (the console shows wasm's `unreachable`), no hook ever runs, and the hook's code would only
-/// take room in the .wasm.
+/// Installs the panic hook that reports a panic to the browser console (called on load): the
+/// message and its location go to `console.error`, then the module aborts (`panic = "abort"`;
+/// the browser reports wasm's `unreachable`).
 #[wasm_bindgen(start)]
 pub fn start() {
-    #[cfg(not(panic = "immediate-abort"))]
     console_error_panic_hook::set_once();
 }
 
