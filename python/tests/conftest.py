@@ -32,14 +32,14 @@ def rng():
 @pytest.fixture(scope="session")
 def cli():
     """The `spherekit` CLI of this checkout (`cargo build --release -p spherekit-cli`, incremental
-    after the module's own build), to compare the module's output with; skipped without cargo."""
+    after the module's own build), to compare the module's output with. The suite runs where the
+    module is built, so cargo is there: its absence is a failure, not a skip."""
     import json
     import shutil
     import subprocess
 
     cargo = shutil.which("cargo")
-    if cargo is None:
-        pytest.skip("cargo is not on PATH: no CLI to compare with")
+    assert cargo is not None, "cargo is not on PATH: no CLI to compare the module with"
     build = subprocess.run(
         [cargo, "build", "--release", "--locked", "--quiet", "-p", "spherekit-cli", "--bin", "spherekit",
          "--message-format=json"],
