@@ -38,7 +38,6 @@ mod surface;
 mod text;
 
 use core::fmt;
-use std::cell::RefCell;
 
 use spherekit::glam::DVec3;
 use spherekit::{
@@ -51,6 +50,7 @@ pub use camera::{Camera, turn_towards, yaw_pitch};
 use canvas::{Canvas, LineStyle, Rgb, Shape, Sketch};
 use stroke::Strokes;
 use surface::{Raster, Surface, Svg};
+use text::Glyphs;
 
 /// The smallest and largest image sizes [`render`] accepts (pixels, the sphere's square).
 pub const SIZE_RANGE: (u32, u32) = (16, 4096);
@@ -339,15 +339,37 @@ impl Prepared {
         scene: &Scene,
         curves: &[BuiltCurve],
     ) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
+        self.render_with(scene, curves, &mut RenderCache::default())
+    }
+
+    /// [`render`](Self::render) with what the last frames left in `cache` (the backdrop of
+    /// the same size and camera, the stroker's buffer, the glyph bitmaps): the same pixels,
+    /// faster for an interactive caller, which keeps the cache between frames and drops it to
+    /// free the memory.
+    ///
+    /// # Errors
+    ///
+    /// As [`render`](Self::render).
+    pub fn render_with(
+        &self,
+        scene: &Scene,
+        curves: &[BuiltCurve],
+        cache: &mut RenderCache,
+    ) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
         let figure = Figure::new(self, scene, curves)?;
         let size = self.size;
         let frames: Vec<Rect> = self.panels.iter().map(|(r, _)| *r).collect();
-        let mut pixmap =
-            backdrop(size, figure.height, figure.axes, &frames).ok_or(RenderError::Size(size))?;
-        let boxes = Strokes::with(pixmap.width(), pixmap.height(), |strokes| {
+        let mut pixmap = cache
+            .backdrop(size, figure.height, figure.axes, &frames)
+            .ok_or(RenderError::Size(size))?;
+        let RenderCache {
+            strokes, glyphs, ..
+        } = cache;
+        let boxes = Strokes::with(strokes, pixmap.width(), pixmap.height(), |strokes| {
             let mut raster = Raster {
                 pixmap: &mut pixmap,
                 strokes,
+                glyphs,
             };
             figure.draw(&mut raster)
         });
@@ -596,39 +618,69 @@ fn plot_area(size: u32, top: u32, strip: u32) -> Option<Rect> {
     Rect::from_xywh(x, y, w, h)
 }
 
-/// The white page with the shaded sphere, its graticule and the plot strips' frames for one
-/// size and camera: the part of a frame that does not depend on the curves. The last one drawn
-/// is kept (per thread), so that redrawing after an edit that leaves the camera alone, such as
-/// dragging a point in the playground, starts from a copy. A copy and a fresh drawing are the
-/// same pixels.
-fn backdrop(size: u32, height: u32, axes: [DVec3; 3], frames: &[Rect]) -> Option<Pixmap> {
-    type Key = (u32, u32, [DVec3; 3], Vec<[u32; 4]>);
-    thread_local! {
-        static LAST: RefCell<Option<(Key, Pixmap)>> = const { RefCell::new(None) };
+/// What the rasterizer keeps from one frame for the next, owned by the caller
+/// ([`Prepared::render_with`]); dropping it frees the memory (the backdrop alone is a frame's
+/// pixels).
+#[derive(Default)]
+pub struct RenderCache {
+    /// The last backdrop drawn, by size, height, camera axes and plot frames.
+    backdrop: Option<(BackdropKey, Pixmap)>,
+    /// The stroker's coverage buffer of the last frame's size.
+    strokes: Option<Strokes>,
+    glyphs: Glyphs,
+}
+
+type BackdropKey = (u32, u32, [DVec3; 3], Vec<[u32; 4]>);
+
+impl fmt::Debug for RenderCache {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("RenderCache")
+            .field(
+                "backdrop",
+                &self.backdrop.as_ref().map(|(_, p)| (p.width(), p.height())),
+            )
+            .field("strokes", &self.strokes.is_some())
+            .field("glyph_bytes", &self.glyphs.bytes())
+            .finish()
     }
-    let rects = frames
-        .iter()
-        .map(|r| [r.left(), r.top(), r.width(), r.height()].map(f32::to_bits))
-        .collect();
-    let key = (size, height, axes, rects);
-    LAST.with_borrow_mut(|last| {
-        if let Some((k, pixmap)) = last.as_ref()
+}
+
+impl RenderCache {
+    /// The white page with the shaded sphere, its graticule and the plot strips' frames for
+    /// one size and camera: the part of a frame that does not depend on the curves. The last
+    /// one drawn is kept, so that redrawing after an edit that leaves the camera alone, such
+    /// as dragging a point in the playground, starts from a copy. A copy and a fresh drawing
+    /// are the same pixels.
+    fn backdrop(
+        &mut self,
+        size: u32,
+        height: u32,
+        axes: [DVec3; 3],
+        frames: &[Rect],
+    ) -> Option<Pixmap> {
+        let rects = frames
+            .iter()
+            .map(|r| [r.left(), r.top(), r.width(), r.height()].map(f32::to_bits))
+            .collect();
+        let key = (size, height, axes, rects);
+        if let Some((k, pixmap)) = &self.backdrop
             && *k == key
         {
             return Some(pixmap.clone());
         }
         let mut pixmap = Pixmap::new(size, height)?;
         pixmap.fill(Color::WHITE);
-        Strokes::with(size, height, |strokes| {
+        Strokes::with(&mut self.strokes, size, height, |strokes| {
             let mut raster = Raster {
                 pixmap: &mut pixmap,
                 strokes,
+                glyphs: &mut self.glyphs,
             };
             draw_backdrop(&mut raster, size, axes, frames);
         });
-        *last = Some((key, pixmap.clone()));
+        self.backdrop = Some((key, pixmap.clone()));
         Some(pixmap)
-    })
+    }
 }
 
 /// Draws the backdrop (see [`backdrop`]) onto `surface`.

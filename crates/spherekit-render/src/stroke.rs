@@ -17,7 +17,8 @@
 //!
 //! Everything is f32 arithmetic with `sqrt` (correctly rounded in IEEE 754) and integer
 //! blending, so native and wasm builds give the same bytes. The buffer costs four bytes per
-//! pixel and is kept per thread between frames of one size.
+//! pixel and is kept in the caller's [`RenderCache`](crate::RenderCache) between frames of one
+//! size.
 
 use tiny_skia::{Pixmap, Point};
 
@@ -143,20 +144,22 @@ impl Strokes {
         }
     }
 
-    /// Runs `f` with an empty buffer for a `width` × `height` pixmap. The buffer is kept per
-    /// thread for the next call of the same size (painting leaves it empty), which saves
-    /// clearing megabytes per frame.
-    pub(crate) fn with<R>(width: u32, height: u32, f: impl FnOnce(&mut Self) -> R) -> R {
-        thread_local! {
-            static KEPT: core::cell::Cell<Option<Strokes>> = const { core::cell::Cell::new(None) };
-        }
-        let mut strokes = KEPT
+    /// Runs `f` with an empty buffer for a `width` × `height` pixmap: the one `kept` holds
+    /// when it has that size, which is put back for the next call when `f` leaves it empty
+    /// (painting does), so that a frame does not clear megabytes of coverage first.
+    pub(crate) fn with<R>(
+        kept: &mut Option<Self>,
+        width: u32,
+        height: u32,
+        f: impl FnOnce(&mut Self) -> R,
+    ) -> R {
+        let mut strokes = kept
             .take()
             .filter(|s| (s.width, s.height) == (width as usize, height as usize))
             .unwrap_or_else(|| Self::new(width, height));
         let out = f(&mut strokes);
         if strokes.runs.is_empty() {
-            KEPT.set(Some(strokes));
+            *kept = Some(strokes);
         }
         out
     }
@@ -738,13 +741,16 @@ mod tests {
     #[test]
     fn the_kept_buffer_is_empty_and_of_the_asked_size() {
         let dims = |s: &mut Strokes| (s.width, s.height, s.coverage.iter().all(|&c| c == 0.0));
-        assert_eq!(Strokes::with(20, 30, dims), (20, 30, true));
-        Strokes::with(20, 30, |s| {
+        let mut kept = None;
+        assert_eq!(Strokes::with(&mut kept, 20, 30, dims), (20, 30, true));
+        assert!(kept.is_some(), "kept for the next call");
+        Strokes::with(&mut kept, 20, 30, |s| {
             s.polyline(&[Point::from_xy(1.0, 1.0); 2], pen(4.0))
         });
         // Left with pending coverage, the buffer is not kept.
-        assert_eq!(Strokes::with(20, 30, dims), (20, 30, true));
-        assert_eq!(Strokes::with(8, 9, dims), (8, 9, true));
+        assert!(kept.is_none());
+        assert_eq!(Strokes::with(&mut kept, 20, 30, dims), (20, 30, true));
+        assert_eq!(Strokes::with(&mut kept, 8, 9, dims), (8, 9, true));
     }
 
     #[test]

@@ -12,7 +12,7 @@ use tiny_skia::{Pixmap, Point, Rect};
 
 use crate::canvas::{Rgb, shade_disc};
 use crate::stroke::{Cap, Pen, Strokes, blend, pixels};
-use crate::text;
+use crate::text::{self, Glyphs};
 
 /// Where a line of text is anchored horizontally.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -45,10 +45,11 @@ fn start(x: f32, w: f32, anchor: Anchor) -> f32 {
     }
 }
 
-/// The pixmap, with the stroker's buffer.
+/// The pixmap, with the stroker's buffer and the glyph bitmaps.
 pub(crate) struct Raster<'a> {
     pub(crate) pixmap: &'a mut Pixmap,
     pub(crate) strokes: &'a mut Strokes,
+    pub(crate) glyphs: &'a mut Glyphs,
 }
 
 impl Surface for Raster<'_> {
@@ -75,7 +76,7 @@ impl Surface for Raster<'_> {
         let (width, height) = (self.pixmap.width() as usize, self.pixmap.height() as usize);
         let data = self.pixmap.data_mut();
         for (c, col, quarter) in text::layout(s, px, x0) {
-            let g = text::bitmap(c, px, quarter);
+            let g = self.glyphs.bitmap(c, px, quarter);
             for j in 0..g.height {
                 let y = baseline + g.top + i32::try_from(j).unwrap_or(i32::MAX / 2);
                 let Ok(y) = usize::try_from(y) else { continue };

@@ -11,11 +11,10 @@
 //! outline pieces are flattened into a number of lines that depends on their size only.
 //!
 //! No hinting: glyphs are placed with their baseline on a whole pixel and their origin on a
-//! quarter pixel, and their bitmaps are kept per thread by character, size and quarter.
+//! quarter pixel, and their bitmaps are kept by character, size and quarter in the caller's
+//! [`RenderCache`](crate::RenderCache).
 
-use std::cell::RefCell;
 use std::collections::BTreeMap;
-use std::rc::Rc;
 
 /// The subset's outlines (see `scripts/font_subset.py` for the format).
 static GLYPHS: &[u8] = include_bytes!("../fonts/glyphs.bin");
@@ -376,22 +375,26 @@ fn line(acc: &mut [f32], stride: usize, h: usize, a: (f32, f32), b: (f32, f32)) 
     }
 }
 
-/// The bitmap of `c` at `px` pixels per em with its origin `quarter` quarters of a pixel
-/// right of a pixel edge, rasterized once per thread.
-pub(crate) fn bitmap(c: char, px: f32, quarter: u8) -> Rc<Bitmap> {
-    type Key = (char, u32, u8);
-    thread_local! {
-        static CACHE: RefCell<BTreeMap<Key, Rc<Bitmap>>> = const { RefCell::new(BTreeMap::new()) };
-    }
-    CACHE.with_borrow_mut(|cache| {
-        if cache.len() > 4096 {
-            cache.clear();
+/// Glyph bitmaps rasterized so far (a figure draws the same few characters at a few sizes).
+#[derive(Debug, Default)]
+pub(crate) struct Glyphs(BTreeMap<(char, u32, u8), Bitmap>);
+
+impl Glyphs {
+    /// The bitmap of `c` at `px` pixels per em with its origin `quarter` quarters of a pixel
+    /// right of a pixel edge, rasterized on first use.
+    pub(crate) fn bitmap(&mut self, c: char, px: f32, quarter: u8) -> &Bitmap {
+        if self.0.len() > 4096 {
+            self.0.clear();
         }
-        cache
+        self.0
             .entry((c, px.to_bits(), quarter))
-            .or_insert_with(|| Rc::new(rasterize(c, px, 0.25 * f32::from(quarter))))
-            .clone()
-    })
+            .or_insert_with(|| rasterize(c, px, 0.25 * f32::from(quarter)))
+    }
+
+    /// The bytes of coverage held.
+    pub(crate) fn bytes(&self) -> usize {
+        self.0.values().map(|b| b.coverage.len()).sum()
+    }
 }
 
 /// The glyphs of `s` set at `px` pixels per em from the pen position `x` (pixels): each

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! Properties of rendered frames that callers rely on: they are opaque (the wasm crate hands
-//! the bytes to a canvas as straight alpha), and redrawing from the kept backdrop gives the
+//! the bytes to a canvas as straight alpha), and redrawing from a cache's kept backdrop gives the
 //! pixels of a fresh drawing.
 
-use spherekit_render::{RenderError, render};
+use spherekit_render::{RenderCache, RenderError, prepare, render};
 use spherekit_scene::Scene;
 
 fn scene(text: &str) -> Scene {
@@ -66,24 +66,33 @@ fn curves_change_the_pixels_they_cross_and_leave_the_rest() {
 
 #[test]
 fn kept_backdrop_gives_the_pixels_of_a_fresh_drawing() {
-    // Each scene drawn first on a thread of its own (nothing kept), then in one thread in an
-    // order that reuses the backdrop (same size and camera twice in a row) and replaces it.
+    // Each scene drawn with a fresh cache (nothing kept), then with one cache in an order that
+    // reuses the backdrop (same size and camera twice in a row) and replaces it.
     let fresh: Vec<Vec<u8>> = [S2, S3, S2_OTHER_CAMERA]
         .iter()
-        .map(|&text| {
-            std::thread::spawn(move || render(&scene(text), 160).expect("renders").take())
-                .join()
-                .expect("thread")
-        })
+        .map(|&text| render(&scene(text), 160).expect("renders").take())
         .collect();
+    let mut cache = RenderCache::default();
     for (i, text) in [S2, S2, S3, S3, S2_OTHER_CAMERA, S2, S2_OTHER_CAMERA]
         .iter()
         .enumerate()
     {
         let k = [0, 0, 1, 1, 2, 0, 2][i];
-        let again = render(&scene(text), 160).expect("renders").take();
-        assert!(again == fresh[k], "draw {i} differs from a fresh drawing");
+        let scene = scene(text);
+        let curves = scene.build().expect("builds");
+        let prepared = prepare(&scene, &curves, 160).expect("lays out");
+        let (again, _) = prepared
+            .render_with(&scene, &curves, &mut cache)
+            .expect("renders");
+        assert!(
+            again.take() == fresh[k],
+            "draw {i} differs from a fresh drawing"
+        );
     }
+    assert!(
+        format!("{cache:?}").contains("backdrop: Some((160"),
+        "the cache keeps the last backdrop: {cache:?}"
+    );
 }
 
 #[test]
@@ -143,7 +152,7 @@ fn a_prepared_figure_renders_the_pixels_of_a_fresh_one_for_every_camera() {
     for text in [S2, S3] {
         let base = scene(text);
         let curves = base.build().expect("builds");
-        let prepared = spherekit_render::prepare(&base, &curves, 200).expect("lays out");
+        let prepared = prepare(&base, &curves, 200).expect("lays out");
         for (yaw, pitch) in [(0.0, 0.0), (35.0, 20.0), (200.0, -70.0), (90.0, 89.0)] {
             let mut v: serde_json::Value = serde_json::from_str(text).expect("JSON");
             v["view"]["camera"] = serde_json::json!({ "yaw": yaw, "pitch": pitch });

@@ -28,7 +28,8 @@ use spherekit::{
     angular_velocity_acceleration_body,
 };
 use spherekit_render::{
-    Camera, PALETTE, PlotAxes, Prepared, camera_of, prepare, render_built, turn_towards,
+    Camera, PALETTE, PlotAxes, Prepared, RenderCache, camera_of, prepare, render_built,
+    turn_towards,
 };
 use spherekit_scene::{
     BuiltCurve, Document, EditError, Plot, PlotTime, SAMPLE_FIELDS, SampleOptions, Scene,
@@ -319,6 +320,8 @@ pub struct Playground {
     /// The last figure laid out, with its key (the document's layout generation and the
     /// size): turning the view renders it again without flattening or sampling.
     prepared: Option<((u64, u32), Prepared)>,
+    /// What the last frames left for the next (the backdrop, the stroker's buffer, glyphs).
+    cache: RenderCache,
     /// What the last failed edit's solver reported (see [`Playground::failure`]).
     failure: Option<SolveFailure>,
 }
@@ -377,6 +380,7 @@ impl Playground {
             rgba: Vec::new(),
             plots: Vec::new(),
             prepared: None,
+            cache: RenderCache::default(),
             failure: None,
         })
     }
@@ -893,7 +897,7 @@ impl Playground {
             Some((k, p)) if k == key => p,
             _ => prepare(scene, curves, size).map_err(js)?,
         };
-        let rendered = prepared.render(scene, curves);
+        let rendered = prepared.render_with(scene, curves, &mut self.cache);
         self.prepared = Some((key, prepared));
         let (pixmap, plots) = rendered.map_err(js)?;
         let h = pixmap.height();
