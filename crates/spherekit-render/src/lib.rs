@@ -28,6 +28,7 @@
 
 mod camera;
 mod canvas;
+mod drawing;
 mod flatten;
 mod legend;
 mod plot;
@@ -48,6 +49,7 @@ use tiny_skia::{Color, Pixmap, Rect};
 
 pub use camera::{Camera, turn_towards, yaw_pitch};
 use canvas::{Canvas, LineStyle, Rgb, Shape, Sketch};
+pub use drawing::Drawing;
 use stroke::Strokes;
 use surface::{Raster, Surface, Svg};
 use text::Glyphs;
@@ -83,6 +85,8 @@ pub enum RenderError {
     Size(u32),
     /// The scene's sphere cannot be drawn.
     Space(String),
+    /// A [`Drawing`] without curves, or with curves on different spheres.
+    Drawing(String),
 }
 
 impl fmt::Display for RenderError {
@@ -98,6 +102,7 @@ impl fmt::Display for RenderError {
                 f,
                 "space: {s} scenes cannot be drawn (rendering shows S1, S2 and S3 scenes)"
             ),
+            Self::Drawing(s) => f.write_str(s),
         }
     }
 }
@@ -175,8 +180,13 @@ pub fn render_figure(
 /// [`RenderError`] for a bad scene, view or size.
 pub fn render_svg(scene: &Scene, size: u32) -> Result<String, RenderError> {
     let curves = scene.build()?;
-    let prepared = prepare(scene, &curves, size)?;
-    let figure = Figure::new(&prepared, scene, &curves)?;
+    svg_of(&Layers::of_scene(scene, &curves), size)
+}
+
+/// The SVG document of a figure's layers.
+fn svg_of(layers: &Layers<'_>, size: u32) -> Result<String, RenderError> {
+    let prepared = Prepared::new(layers, size)?;
+    let figure = Figure::new(&prepared, layers);
     let mut svg = Svg::new(size, figure.height);
     let frames: Vec<Rect> = prepared.panels.iter().map(|(r, _)| *r).collect();
     draw_backdrop(&mut svg, size, figure.axes, &frames);
@@ -222,27 +232,69 @@ impl fmt::Debug for Prepared {
 ///
 /// [`RenderError`] for a bad view or size, or a sphere that cannot be drawn.
 pub fn prepare(scene: &Scene, curves: &[BuiltCurve], size: u32) -> Result<Prepared, RenderError> {
-    Prepared::new(scene, curves, size)
+    Prepared::new(&Layers::of_scene(scene, curves), size)
+}
+
+/// What a figure draws, from a scene or from a [`Drawing`]: the sphere, the view options, the
+/// built curves and how each is drawn.
+struct Layers<'a> {
+    space: Space,
+    view: &'a View,
+    curves: &'a [BuiltCurve],
+    styles: Vec<Style<'a>>,
+}
+
+/// How one curve is drawn: its colour (default: the palette's by position), its name in the
+/// legend, and whether its points are joined by a polygon (for curves that do not pass
+/// through them).
+#[derive(Clone, Debug)]
+struct Style<'a> {
+    color: Option<Rgb>,
+    label: &'a str,
+    polygon: bool,
+}
+
+impl<'a> Layers<'a> {
+    fn of_scene(scene: &'a Scene, curves: &'a [BuiltCurve]) -> Self {
+        Self {
+            space: scene.space,
+            view: scene.view(),
+            curves,
+            styles: scene
+                .curves
+                .iter()
+                .map(|spec| Style {
+                    color: spec.color,
+                    label: spec.label.as_deref().unwrap_or(spec.method.id),
+                    polygon: !spec.method.interpolates,
+                })
+                .collect(),
+        }
+    }
+
+    fn color(&self, i: usize) -> Rgb {
+        self.styles[i].color.unwrap_or(PALETTE[i % PALETTE.len()])
+    }
 }
 
 impl Prepared {
-    fn new(scene: &Scene, curves: &[BuiltCurve], size: u32) -> Result<Self, RenderError> {
+    fn new(layers: &Layers<'_>, size: u32) -> Result<Self, RenderError> {
         if !(SIZE_RANGE.0..=SIZE_RANGE.1).contains(&size) {
             return Err(RenderError::Size(size));
         }
-        if !scene.space.drawable() {
-            return Err(RenderError::Space(scene.space.name()));
+        if !layers.space.drawable() {
+            return Err(RenderError::Space(layers.space.name()));
         }
-        let view = scene.view();
+        let (view, curves) = (layers.view, layers.curves);
         let mut sketch = Sketch::default();
         let single = curves.len() == 1;
         let normalized = view.plot_time == PlotTime::Normalized;
         let omega = view.plot == Plot::Omega;
         let mut speeds = Vec::new();
         let mut components = Vec::new();
-        for (i, (spec, curve)) in scene.curves.iter().zip(curves).enumerate() {
-            let color = spec.color.unwrap_or(PALETTE[i % PALETTE.len()]);
-            let polygon = !spec.method.interpolates;
+        for (i, (style, curve)) in layers.styles.iter().zip(curves).enumerate() {
+            let color = layers.color(i);
+            let polygon = style.polygon;
             let sampled = match curve {
                 BuiltCurve::S2(b) => {
                     draw_points(&mut sketch, b, color, polygon, view, &|p: &S2Point| {
@@ -280,7 +332,7 @@ impl Prepared {
                 components.push(sampled.series(k + 1, c, dash, k == 0));
             }
         }
-        let s3 = scene.space == Space::S3;
+        let s3 = layers.space == Space::S3;
         let mut panels_content = Vec::new();
         if view.plot != Plot::None {
             panels_content.push(plot::Panel {
@@ -356,7 +408,15 @@ impl Prepared {
         curves: &[BuiltCurve],
         cache: &mut RenderCache,
     ) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
-        let figure = Figure::new(self, scene, curves)?;
+        self.render_layers(&Layers::of_scene(scene, curves), cache)
+    }
+
+    fn render_layers(
+        &self,
+        layers: &Layers<'_>,
+        cache: &mut RenderCache,
+    ) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
+        let figure = Figure::new(self, layers);
         let size = self.size;
         let frames: Vec<Rect> = self.panels.iter().map(|(r, _)| *r).collect();
         let mut pixmap = cache
@@ -405,20 +465,16 @@ fn strip_height(size: u32) -> u32 {
 }
 
 impl<'a> Figure<'a> {
-    fn new(
-        prepared: &'a Prepared,
-        scene: &Scene,
-        curves: &[BuiltCurve],
-    ) -> Result<Self, RenderError> {
-        let view = scene.view();
+    fn new(prepared: &'a Prepared, layers: &Layers<'_>) -> Self {
+        let view = layers.view;
         let size = prepared.size;
-        let axes = Camera::of(view, curves).axes();
+        let axes = Camera::of(view, layers.curves).axes();
         let canvas = prepared.sketch.project(size, axes);
         let scale = canvas.scale;
         let panels = &prepared.panels;
         let strip = strip_height(size);
         let legend = if view.legend {
-            legend_entries(scene, view, &canvas, prepared.single, !panels.is_empty())
+            legend_entries(layers, &canvas, prepared.single, !panels.is_empty())
         } else {
             Vec::new()
         };
@@ -430,7 +486,7 @@ impl<'a> Figure<'a> {
         } else {
             size as f32 * 0.985
         };
-        Ok(Self {
+        Self {
             prepared,
             height: size + plots + legend_h,
             axes,
@@ -439,7 +495,7 @@ impl<'a> Figure<'a> {
             legend,
             legend_top,
             title: view.title.clone(),
-        })
+        }
     }
 
     /// Draws the figure over its backdrop; returns the plots' axes boxes (see [`PlotAxes`]).
@@ -511,8 +567,7 @@ fn component_label(s3: bool, normalized: bool) -> String {
 /// The legend: the curves (or, for one S³ curve, its traced body axes), the triads, the
 /// velocity components, and the kinds of marks in the picture.
 fn legend_entries(
-    scene: &Scene,
-    view: &View,
+    layers: &Layers<'_>,
     canvas: &Canvas,
     single: bool,
     plotted: bool,
@@ -523,13 +578,8 @@ fn legend_entries(
         label: label.to_owned(),
         group,
     };
-    let s3 = scene.space == Space::S3;
-    let name = |i: usize| {
-        let spec = &scene.curves[i];
-        spec.label
-            .clone()
-            .unwrap_or_else(|| spec.method.id.to_owned())
-    };
+    let (view, s3) = (layers.view, layers.space == Space::S3);
+    let name = |i: usize| layers.styles[i].label;
     let axis = ["x", "y", "z"];
     let mut out = Vec::new();
     if s3 && single {
@@ -542,9 +592,8 @@ fn legend_entries(
             ));
         }
     } else {
-        for (i, spec) in scene.curves.iter().enumerate() {
-            let color = spec.color.unwrap_or(PALETTE[i % PALETTE.len()]);
-            out.push(entry(Swatch::Line(color, None, 1.0), &name(i), 0));
+        for i in 0..layers.styles.len() {
+            out.push(entry(Swatch::Line(layers.color(i), None, 1.0), name(i), 0));
         }
         if s3 {
             let traced: Vec<&str> = view.axes.iter().map(|&k| axis[k]).collect();

@@ -10,6 +10,7 @@ use spherekit::{
 };
 
 use crate::scene::{SampleOptions, Scene};
+use crate::space::Space;
 
 /// A curve built from a scene, with the extras a method derives.
 #[derive(Debug)]
@@ -31,11 +32,9 @@ pub struct Built<P: Manifold> {
 }
 
 impl<P: ScenePoint> Built<P> {
-    /// A built curve with no extras, C⁰ at its joints.
-    pub(crate) fn new(
-        curve: impl Curve<Point = P> + Send + Sync + 'static,
-        inputs: Vec<P>,
-    ) -> Self {
+    /// A built curve with no extras, C⁰ at its joints: `curve` through (or near) `inputs`.
+    #[must_use]
+    pub fn new(curve: impl Curve<Point = P> + Send + Sync + 'static, inputs: Vec<P>) -> Self {
         Self {
             curve: Box::new(curve),
             inputs,
@@ -46,7 +45,9 @@ impl<P: ScenePoint> Built<P> {
         }
     }
 
-    pub(crate) fn with_controls(mut self, controls: Vec<P>) -> Self {
+    /// The curve with its derived control points (drawn as squares, joined by a polygon).
+    #[must_use]
+    pub fn with_controls(mut self, controls: Vec<P>) -> Self {
         self.controls = controls;
         self
     }
@@ -431,6 +432,10 @@ pub trait ScenePoint: Manifold<Vector: Send + Sync> + Send + Sync + 'static {
     fn angular(_jet: &Jet<Self>, _body: bool) -> Option<([f64; 3], [f64; 3])> {
         None
     }
+    /// The sphere the point is on (of S^m, its dimension).
+    fn space(&self) -> Space;
+    /// The built curve of this sphere, as the rest of the scene code takes it.
+    fn into_built_curve(built: Built<Self>) -> BuiltCurve;
 }
 
 impl ScenePoint for S2Point {
@@ -445,6 +450,12 @@ impl ScenePoint for S2Point {
     }
     fn vector_from_coords(c: &[f64]) -> Option<spherekit::glam::DVec3> {
         (c.len() == 3).then(|| spherekit::glam::DVec3::from_slice(c))
+    }
+    fn space(&self) -> Space {
+        Space::S2
+    }
+    fn into_built_curve(built: Built<Self>) -> BuiltCurve {
+        BuiltCurve::S2(built)
     }
 }
 
@@ -472,6 +483,12 @@ impl ScenePoint for UnitQuat {
         };
         Some((w.to_array(), a.to_array()))
     }
+    fn space(&self) -> Space {
+        Space::S3
+    }
+    fn into_built_curve(built: Built<Self>) -> BuiltCurve {
+        BuiltCurve::S3(built)
+    }
 }
 
 impl ScenePoint for SnPoint {
@@ -486,6 +503,12 @@ impl ScenePoint for SnPoint {
     }
     fn vector_from_coords(c: &[f64]) -> Option<VecN> {
         Some(VecN::from(c.to_vec()))
+    }
+    fn space(&self) -> Space {
+        Space::Sn(self.coords().len().saturating_sub(1))
+    }
+    fn into_built_curve(built: Built<Self>) -> BuiltCurve {
+        BuiltCurve::Sn(built)
     }
 }
 
