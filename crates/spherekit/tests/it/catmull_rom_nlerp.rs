@@ -217,7 +217,7 @@ fn bad_input_is_a_typed_error() {
         on_equator(60.0 * deg),
     ];
     let e = CatmullRomNlerp::try_new(zigzag, None).unwrap_err();
-    assert_eq!(e, SplineError::ThroughOrigin { index: 1 });
+    assert_eq!(e, SplineError::ThroughOrigin { index: 1, next: 2 });
     assert!(e.to_string().contains("point 1 to point 2"), "{e}");
     let e = CatmullRomNlerp::try_new(vec![S2Point::X; 4], Some(vec![0.0, 0.0])).unwrap_err();
     assert_eq!(e, SplineError::KnotsNotIncreasing { index: 1 });
