@@ -4,125 +4,25 @@
 //! The C² cubic spline through keys at given times, cubic in the tangent space of each key
 //! (scipy's `RotationSpline` on S³, the same construction on every sphere).
 //!
-//! # Construction
-//!
-//! Keys `p₀ … p_{n−1}` at times `t₀ < … < t_{n−1}` (closed: `n` segments and one more time
-//! `t_n`, the segment `n − 1` going from `p_{n−1}` back to `p₀`). With `hᵢ = tᵢ₊₁ − tᵢ`,
-//! `rᵢ = Log_{pᵢ}(pᵢ₊₁)` (angle `θᵢ = |rᵢ| < π`, direction `eᵢ`) and `s = t − tᵢ`:
+//! Keys `pᵢ` at times `tᵢ`, `hᵢ = tᵢ₊₁ − tᵢ`, `rᵢ = Log_{pᵢ}(pᵢ₊₁)`, `s = t − tᵢ`:
 //!
 //! ```text
-//! c(t)  = Exp_{pᵢ}(vᵢ(s)),        Exp_p(v) = cos|v|·p + sin|v|/|v|·v
-//! vᵢ(s) = Vᵢ·s + (3rᵢ/hᵢ − 2Vᵢ − Uᵢ)·s²/hᵢ + (−2rᵢ/hᵢ + Vᵢ + Uᵢ)·s³/hᵢ²
+//! c(t) = Exp_{pᵢ}(vᵢ(s)),  vᵢ cubic,  vᵢ(0) = 0,  vᵢ(hᵢ) = rᵢ,  vᵢ′(0) = Vᵢ,  vᵢ′(hᵢ) = (dExp_{rᵢ})⁻¹Vᵢ₊₁
 //! ```
 //!
-//! a cubic in the tangent space at `pᵢ` with `vᵢ(0) = 0`, `vᵢ(hᵢ) = rᵢ`, `vᵢ′(0) = Vᵢ` (the key
-//! velocity at `pᵢ`) and `vᵢ′(hᵢ) = Uᵢ = (dExpᵢ)⁻¹ Vᵢ₊₁`, so that the velocity is continuous.
+//! The key velocities `Vᵢ` make the acceleration continuous at every interior key (and at the
+//! seam of a closed curve): a block tridiagonal system (block cyclic when closed) with a
+//! nonlinear term, solved by Newton's method in parallel-transported tangent frames.
 //!
-//! **The differential of Exp.** At `v = θe` (`|e| = 1`, tangent at `p`), split a tangent vector
-//! `w = w∥·e + w⊥`. With `q = Exp_p(v)` and the unit tangent `e′ = −sin θ·p + cos θ·e` at `q`
-//! (the parallel transport of `e`):
+//! Source: N. Mayorov, *Smooth attitude interpolation* (2019), the reference of scipy's
+//! `RotationSpline` (`docs/references.md`, entries 16–18). The derivation (the differential of
+//! `Exp`, the continuity equations, the ends, the solver and its stopping rule) is in
+//! `docs/derivations.md#cubic-spline`.
 //!
-//! ```text
-//! dExp_v[w] = w∥·e′ + (sin θ/θ)·w⊥                                       (1)
-//! d²/ds² Exp_p(v(s)) = dExp_v[v″] + Q_v(v′),
-//! Q_v(w) = −w∥²·q + |w⊥|²·(−(sin θ/θ)·p + σ′(θ)·e) + 2σ′(θ)·w∥·w⊥,   σ′(θ) = (θ cos θ − sin θ)/θ²
-//! ```
-//!
-//! Its component tangent at `q` is `T_v(w) = |w⊥|²·κ(θ)·e′ + 2σ′(θ)·w∥·w⊥` with
-//! `κ(θ) = (θ − sin θ cos θ)/θ²`; the normal part is `−|c′|²·q`, as on every curve of the sphere.
-//! `σ′` and `κ` use their Taylor series below θ = 0.1; at θ = 0, `T = 0` and `dExp = id`.
-//!
-//! **Continuity of acceleration.** At an interior key `k` the acceleration from the left
-//! (`s = h_{k−1}` on segment `k − 1`) equals the one from the right (`s = 0` on segment `k`,
-//! where `dExp = id`). With `Mᵢ = dExpᵢ` at `rᵢ` (from `T_{pᵢ}` to `T_{pᵢ₊₁}`), `Nᵢ = Mᵢ⁻¹`,
-//! `r̃ᵢ = Mᵢ rᵢ = θᵢ·eᵢ′ = −Log_{pᵢ₊₁}(pᵢ)`, this is, for `k = 1 … n − 2`:
-//!
-//! ```text
-//! (2/h_{k−1})·M_{k−1}V_{k−1} + 4(1/h_{k−1} + 1/h_k)·V_k + (2/h_k)·N_k V_{k+1}
-//!     + T_{k−1}(N_{k−1}V_k)  =  6 r̃_{k−1}/h_{k−1}² + 6 r_k/h_k²                        (2)
-//! ```
-//!
-//! which is scipy's system (Rotation vectors of the body frame are twice the tangent vectors in
-//! `q̄`-coordinates on S³: a linear map, so the same curve). On a great circle `M = N = id`,
-//! `T = 0` and (2) is the Euclidean cubic spline of the angle.
-//!
-//! **Ends.** *Natural*: zero tangential acceleration at `p₀` and `p_{n−1}`: the rows of (2) with
-//! the missing segment dropped, `(4/h₀)V₀ + (2/h₀)N₀V₁ = 6r₀/h₀²` and its mirror image with `T`.
-//! *Clamped*: `V₀`, `V_{n−1}` given. *Scipy*: `V₀ = r₀/h₀` and `V_{n−1} = r̃_{n−2}/h_{n−2}`, the
-//! mean velocities of the end segments (scipy sets the end angular rates to the first and last
-//! segments' mean rates and solves the interior ones). *Closed*: (2) at every key, indices
-//! mod `n`.
-//!
-//! **Not reversal symmetric.** Each segment is a cubic in the tangent space of its *first* key,
-//! so the keys and times reversed give a different curve (exactly the same only on a great
-//! circle); the difference shrinks like the cube of the step. scipy's `RotationSpline` has the
-//! same property.
-//!
-//! **Solving.** The unknowns are written in orthonormal frames of the tangent spaces that are
-//! parallel transported along the chain of geodesics (so `Mᵢ` becomes the symmetric
-//! `sinc θᵢ·I + (1 − sinc θᵢ)·êᵢêᵢᵀ` and `Nᵢ` its inverse; a closed chain picks up the
-//! holonomy rotation `H` at the seam), inside the span of the keys (and clamped velocities).
-//! (2) is block tridiagonal (block cyclic when closed) with blocks of the tangent dimension.
-//! Newton's method solves it from `V = 0`:
-//!
-//! - the first step solves the linear part (scipy's first iterate). At `V = 0` the Jacobian has
-//!   the blocks `(2/hₖ₋₁)Mₖ₋₁`, a multiple of `I`, and `(2/hₖ)Nₖ`, and since `MₖNₖ = I` every
-//!   pivot of its block LU factorisation is a multiple of `I`: the step is the scalar
-//!   recurrence of the Euclidean spline with `M` and `N` applied as vectors (an open curve; a
-//!   closed one uses the general factorisation);
-//! - (open curves) a second step with the same scalar factorisation corrects for the nonlinear
-//!   term: the linear part is solved at the first iterate, so the residual there is `T(wₖ)`,
-//!   computed and eliminated (from the last row up: the pivots of that direction are scalars
-//!   too) as the linear step's backward substitution yields each `Vₖ`, and substituted a row
-//!   ahead of the next sweep. It takes `V` about 30× closer to the solution, so Newton's first
-//!   factorisation starts nearer and the chord steps converge faster;
-//! - the Jacobian at that point (`DT = 2B(u, ·)` added to the diagonal blocks) is factorised
-//!   once, in O(n) (bordered for the cyclic case), and reused for chord steps while the
-//!   residual falls by 10× per step, refactorised otherwise;
-//! - a factorising step is a forward sweep, which evaluates a row of the residual, builds and
-//!   factorises the row and eliminates it at once, and a backward substitution;
-//! - a chord step does not evaluate the equations. They are linear in `V` but for the term
-//!   `T(wₖ)` of each row, a quadratic form `B(w, w)` (`DT(w) = 2B(w, ·)`) in the end velocity
-//!   `wₖ = N_{k−1}Vₖ` of the segment before the key, which depends on one unknown. A step
-//!   `V ← V − D` solves `F(V) − J(V̄)D = 0` with the Jacobian at the factorisation point `V̄`,
-//!   so the residual after it is exactly
-//!
-//!   ```text
-//!   F(V − D)ₖ = T(w − s) − T(w) + DT(w̄)s = B(s − 2W, s),   s = wₖ(D),  W = wₖ(V − V̄)
-//!   ```
-//!
-//!   (`H` applied across the seam): block diagonal, computed in the backward substitution as
-//!   each `Dₖ` comes out; the next forward pass only eliminates it. (This leaves out the
-//!   rounding of the factorised solve, `O(ε·|D|)`, far below the threshold; a unit test compares
-//!   the updated residual with the evaluated one on random systems.)
-//!
-//! The iteration stops when the largest row residual, relative to the root sum of squares of
-//! the row's terms, is at most 1e-12, and reports [`SolveError::NoConvergence`](crate::SolveError::NoConvergence) if it is not
-//! after the iteration limit. An updated residual is relative to the terms at the last
-//! evaluation `V̄`; it is turned into a bound at `V`: each row's terms move by at most `Lₖ·ω`
-//! when no unknown has moved by more than `ω ≤ 1` since (`Lₖ` from the row's coefficients:
-//! `4/h` terms, `2/h`, `2/(h·sinc θ)`, and `|B(a, b)| ≤ (|κ| + |sinc′|)|a||b|` for the change of
-//! `T`), and `ω` is at most the largest `|Wₖ|`, so the relative residual at `V` is at most the
-//! updated one over `1 − ω·maxₖ Lₖ/|termsₖ(V̄)|` (a fresh evaluation when that is not
-//! positive). For the benchmarks' 1 000 random rotations of 0.4–1.2 rad at unit spacing it
-//! takes the linear step and its correction, one Newton step and one chord step (residuals
-//! 1.4 at `V = 0`, then 1.3e-8 and 5.4e-13, the last bound 0.4 % above the updated residual);
-//! without the correction it took three chord steps (1.7e-2 at the first factorisation, then
-//! 1.3e-5, 1.5e-8, 1.8e-11, 2.6e-14).
-//!
-//! # Sources
-//!
-//! - The construction (cubic rotation vectors in the body frame, the nonlinear term of the
-//!   angular acceleration, the block tridiagonal iteration): N. Mayorov, *Smooth attitude
-//!   interpolation*, 2019, the reference of scipy's `RotationSpline`
-//!   (<https://github.com/scipy/scipy/files/2932755/attitude_interpolation.pdf>);
-//!   P. Virtanen et al., *`SciPy` 1.0: fundamental algorithms for scientific computing in Python*,
-//!   Nature Methods 17, 261–272 (2020), <https://doi.org/10.1038/s41592-019-0686-2>.
-//! - Cubics in the tangent space at a key, the idea behind it: M.-J. Kim, M.-S. Kim,
-//!   S. Y. Shin, *A C²-continuous B-spline quaternion curve interpolating a given sequence of
-//!   solid orientations*, Computer Animation '95, 72–81, <https://doi.org/10.1109/CA.1995.393545>.
-//! - The differential of the sphere's exponential map (1) and its second-order term are derived
-//!   above from `Exp_p(v) = cos|v|·p + sinc|v|·v` by differentiating twice.
+//! The parts: [`frames`] (the tangent frames, and the solution back to ambient vectors),
+//! [`equations`] (the segments' constants, the nonlinear term, the shared block algebra),
+//! [`fixed`] (the solver of tangent dimensions 1 to 3) and [`dynamic`] (the solver of higher
+//! dimensions on slices, and the test oracle of the first).
 
 use glam::{DVec3, DVec4};
 
@@ -285,8 +185,8 @@ struct Segment<V> {
 /// key; the key velocities are solved so that velocity and acceleration are continuous at every
 /// interior key (and at the seam of a closed curve). On S³ with [`CubicEnd::Scipy`] this is
 /// scipy's `RotationSpline` (keys canonicalised by [`unflip`](crate::unflip), since scipy
-/// interpolates the shortest rotations). The module documentation of the construction, the
-/// continuity equations and their solution is reproduced here:
+/// interpolates the shortest rotations). In short (the derivation:
+/// `docs/derivations.md#cubic-spline`):
 ///
 /// ```text
 /// c(t) = Exp_{pᵢ}(vᵢ(t − tᵢ)),  vᵢ cubic,  vᵢ(0) = 0,  vᵢ(hᵢ) = Log_{pᵢ}(pᵢ₊₁)
@@ -295,7 +195,7 @@ struct Segment<V> {
 /// ```
 ///
 /// with `M = dExp` at the segment's end, `N = M⁻¹` and `T` the tangential second-order term of
-/// `Exp` (see the source for the closed forms). Newton's method on the block tridiagonal
+/// `Exp` (closed forms in the derivation). Newton's method on the block tridiagonal
 /// system, O(n) per step, to a relative residual ≤ 1e-12 ([`solve_info`](Self::solve_info)).
 ///
 /// Sources: N. Mayorov, *Smooth attitude interpolation* (2019), the reference of scipy's

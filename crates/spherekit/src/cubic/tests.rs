@@ -210,7 +210,7 @@ fn the_correction_brings_the_first_iterate_closer() {
     }
     // On these systems (angles to 2 rad, widths 0.05–5: far from the linear solution) it
     // halves the residual typically, by 5× at best, 13 % worse at worst; on the benchmarks'
-    // keys by 30× (the module documentation).
+    // keys by 30× (`BENCHMARKS.md`).
     ratios.sort_by(f64::total_cmp);
     assert!(ratios.len() >= 20, "{ratios:?}");
     assert!(ratios[ratios.len() / 2] < 0.6, "{ratios:?}");
