@@ -4,7 +4,7 @@
 //! The solver for tangent dimensions above 3, on slices: Newton's method on the block
 //! tridiagonal (closed: bordered cyclic) system, every step evaluated and factorised in full.
 
-use super::equations::{Dim, Geometry, add_t, apply_s, dot, mat_mul, mat_vec, norm, s_matrix};
+use super::equations::{Geometry, add_t, apply_s, dot, mat_mul, mat_vec, norm, s_matrix};
 use super::{CubicSolveInfo, MAX_ITERATIONS, MAX_RESIDUAL, TARGET_RESIDUAL};
 use crate::error::{SolveError, SplineError};
 
@@ -27,8 +27,8 @@ struct Factors {
 impl Geometry {
     /// The residuals `F(x)` into `f`; returns the largest row residual relative to the size of
     /// the row's terms.
-    pub(super) fn residual<D: Dim>(&self, d: D, x: &[f64], f: &mut [f64]) -> f64 {
-        let m = d.get();
+    pub(super) fn residual(&self, x: &[f64], f: &mut [f64]) -> f64 {
+        let m = self.m;
         let mut worst = 0.0_f64;
         let mut t1 = [0.0; 16];
         let mut t2 = [0.0; 16];
@@ -113,8 +113,8 @@ impl Geometry {
     }
 
     /// The Jacobian at `x`, factorised.
-    fn factor<D: Dim>(&self, d: D, x: &[f64]) -> Option<Factors> {
-        let m = d.get();
+    fn factor(&self, x: &[f64]) -> Option<Factors> {
+        let m = self.m;
         let mm = m * m;
         let n = self.n;
         let mut a_blk = vec![0.0; mm];
@@ -143,7 +143,7 @@ impl Geometry {
         let mut c_last = vec![0.0; mm];
         let mut c_blk = vec![0.0; mm];
         for k in 0..n {
-            self.blocks(d, k, x, &mut a_blk, &mut d_blk, &mut tmp, &mut u);
+            self.blocks(k, x, &mut a_blk, &mut d_blk, &mut tmp, &mut u);
             // C block: (2/h) S⁻¹ H̃ᵀ.
             c_blk.fill(0.0);
             if let (None, Some(nx)) = (self.fixed_row(k), self.next(k)) {
@@ -174,15 +174,15 @@ impl Geometry {
             }
             if k > 0 {
                 // L = A D̃ₖ₋₁⁻¹; D̃ = D − L Cₖ₋₁.
-                mat_mul(d, &a_blk, &fac.dinv[(k - 1) * mm..k * mm], &mut tmp);
+                mat_mul(m, &a_blk, &fac.dinv[(k - 1) * mm..k * mm], &mut tmp);
                 fac.l[k * mm..(k + 1) * mm].copy_from_slice(&tmp);
-                mat_mul(d, &tmp, &fac.c[(k - 1) * mm..k * mm], &mut tmp2);
+                mat_mul(m, &tmp, &fac.c[(k - 1) * mm..k * mm], &mut tmp2);
                 for (dv, t) in d_blk.iter_mut().zip(&tmp2) {
                     *dv -= t;
                 }
                 if self.closed {
                     // G̃ₖ = Gₖ − L G̃ₖ₋₁.
-                    mat_mul(d, &tmp, &border[(k - 1) * mm..k * mm], &mut tmp2);
+                    mat_mul(m, &tmp, &border[(k - 1) * mm..k * mm], &mut tmp2);
                     for (g, t) in border[k * mm..(k + 1) * mm].iter_mut().zip(&tmp2) {
                         *g -= t;
                     }
@@ -196,7 +196,7 @@ impl Geometry {
                 c_blk.fill(0.0);
             }
             fac.c[k * mm..(k + 1) * mm].copy_from_slice(&c_blk);
-            if !invert(d, &d_blk, &mut fac.dinv[k * mm..(k + 1) * mm]) {
+            if !invert(m, &d_blk, &mut fac.dinv[k * mm..(k + 1) * mm]) {
                 return None;
             }
         }
@@ -207,7 +207,7 @@ impl Geometry {
                 tmp.copy_from_slice(&border[k * mm..(k + 1) * mm]);
                 if k + 2 < n {
                     mat_mul(
-                        d,
+                        m,
                         &fac.c[k * mm..(k + 1) * mm],
                         &z[(k + 1) * mm..(k + 2) * mm],
                         &mut tmp2,
@@ -216,17 +216,17 @@ impl Geometry {
                         *t -= s;
                     }
                 }
-                mat_mul(d, &fac.dinv[k * mm..(k + 1) * mm], &tmp, &mut tmp2);
+                mat_mul(m, &fac.dinv[k * mm..(k + 1) * mm], &tmp, &mut tmp2);
                 z[k * mm..(k + 1) * mm].copy_from_slice(&tmp2);
             }
             // Schur complement D − A Z_{n−2} − C Z₀.
-            mat_mul(d, &a_last, &z[(n - 2) * mm..(n - 1) * mm], &mut tmp);
-            mat_mul(d, &c_last, &z[..mm], &mut tmp2);
+            mat_mul(m, &a_last, &z[(n - 2) * mm..(n - 1) * mm], &mut tmp);
+            mat_mul(m, &c_last, &z[..mm], &mut tmp2);
             for i in 0..mm {
                 d_last[i] -= tmp[i] + tmp2[i];
             }
             let mut s_inv = vec![0.0; mm];
-            if !invert(d, &d_last, &mut s_inv) {
+            if !invert(m, &d_last, &mut s_inv) {
                 return None;
             }
             fac.z = z;
@@ -242,9 +242,8 @@ impl Geometry {
         clippy::too_many_arguments,
         reason = "scratch buffers passed down to avoid allocation per row"
     )]
-    fn blocks<D: Dim>(
+    fn blocks(
         &self,
-        d: D,
         k: usize,
         x: &[f64],
         a_blk: &mut [f64],
@@ -252,7 +251,7 @@ impl Geometry {
         tmp: &mut [f64],
         u: &mut [f64],
     ) {
-        let m = d.get();
+        let m = self.m;
         a_blk.fill(0.0);
         d_blk.fill(0.0);
         if self.fixed_row(k).is_some() {
@@ -273,7 +272,7 @@ impl Geometry {
             diag += 4.0 / sc.h;
             // A = (2/h) H̃ S.
             s_matrix(e, sc.sinc, 2.0 / sc.h, tmp);
-            self.left_h(d, p, tmp, a_blk);
+            self.left_h(p, tmp, a_blk);
             // D += H̃ (DT(u) S⁻¹) H̃ᵀ, u = S⁻¹ H̃ᵀ xₖ.
             self.to_segment_end(p, &x[k * m..(k + 1) * m], u);
             apply_s(e, sc.inv_sinc, u);
@@ -330,18 +329,18 @@ impl Geometry {
     }
 
     /// `out = H̃·mat` (`H` across the seam, identity otherwise).
-    fn left_h<D: Dim>(&self, d: D, seg: usize, mat: &[f64], out: &mut [f64]) {
-        let m = d.get();
+    fn left_h(&self, seg: usize, mat: &[f64], out: &mut [f64]) {
+        let m = self.m;
         if self.is_seam(seg) {
-            mat_mul(d, &self.hol, mat, out);
+            mat_mul(m, &self.hol, mat, out);
         } else {
             out[..m * m].copy_from_slice(&mat[..m * m]);
         }
     }
 
     /// `x ← J⁻¹ x` with the factors.
-    fn substitute<D: Dim>(&self, d: D, fac: &Factors, x: &mut [f64]) {
-        let m = d.get();
+    fn substitute(&self, fac: &Factors, x: &mut [f64]) {
+        let m = self.m;
         let mm = m * m;
         let n = self.n;
         let rows = if self.closed { n - 1 } else { n };
@@ -349,7 +348,7 @@ impl Geometry {
         // Forward: yₖ = bₖ − Lₖ yₖ₋₁.
         for k in 1..rows {
             mat_vec(
-                d,
+                m,
                 &fac.l[k * mm..(k + 1) * mm],
                 &x[(k - 1) * m..k * m],
                 &mut t,
@@ -362,7 +361,7 @@ impl Geometry {
         for k in (0..rows).rev() {
             if k + 1 < rows {
                 mat_vec(
-                    d,
+                    m,
                     &fac.c[k * mm..(k + 1) * mm],
                     &x[(k + 1) * m..(k + 2) * m],
                     &mut t,
@@ -373,7 +372,7 @@ impl Geometry {
             }
             t.copy_from_slice(&x[k * m..(k + 1) * m]);
             mat_vec(
-                d,
+                m,
                 &fac.dinv[k * mm..(k + 1) * mm],
                 &t,
                 &mut x[k * m..(k + 1) * m],
@@ -382,18 +381,18 @@ impl Geometry {
         if self.closed {
             // x_{n−1} = S⁻¹ (b_{n−1} − A w_{n−2} − C w₀); xₖ = wₖ − Zₖ x_{n−1}.
             let mut rhs = x[(n - 1) * m..].to_vec();
-            mat_vec(d, &fac.a_last, &x[(n - 2) * m..(n - 1) * m], &mut t);
+            mat_vec(m, &fac.a_last, &x[(n - 2) * m..(n - 1) * m], &mut t);
             for (r, ta) in rhs.iter_mut().zip(&t) {
                 *r -= ta;
             }
-            mat_vec(d, &fac.c_last, &x[..m], &mut t);
+            mat_vec(m, &fac.c_last, &x[..m], &mut t);
             for (r, ta) in rhs.iter_mut().zip(&t) {
                 *r -= ta;
             }
             let mut last = vec![0.0; m];
-            mat_vec(d, &fac.schur_inv, &rhs, &mut last);
+            mat_vec(m, &fac.schur_inv, &rhs, &mut last);
             for k in 0..n - 1 {
-                mat_vec(d, &fac.z[k * mm..(k + 1) * mm], &last, &mut t);
+                mat_vec(m, &fac.z[k * mm..(k + 1) * mm], &last, &mut t);
                 for (xa, ta) in x[k * m..(k + 1) * m].iter_mut().zip(&t) {
                     *xa -= ta;
                 }
@@ -403,11 +402,11 @@ impl Geometry {
     }
 
     /// Newton's method from `x = 0`, reusing a factorisation while it converges fast.
-    pub(super) fn solve<D: Dim>(&self, d: D) -> Result<(Vec<f64>, CubicSolveInfo), SplineError> {
-        let m = d.get();
+    pub(super) fn solve(&self) -> Result<(Vec<f64>, CubicSolveInfo), SplineError> {
+        let m = self.m;
         let mut x = vec![0.0; self.n * m];
         let mut f = vec![0.0; self.n * m];
-        let mut residual = self.residual(d, &x, &mut f);
+        let mut residual = self.residual(&x, &mut f);
         let mut info = CubicSolveInfo {
             iterations: 0,
             factorizations: 0,
@@ -423,17 +422,17 @@ impl Geometry {
         let mut fresh = false;
         while residual > TARGET_RESIDUAL && info.iterations < MAX_ITERATIONS {
             if fac.is_none() {
-                fac = Some(self.factor(d, &x).ok_or_else(|| fail(info))?);
+                fac = Some(self.factor(&x).ok_or_else(|| fail(info))?);
                 info.factorizations += 1;
                 fresh = true;
             }
             let factors = fac.as_ref().expect("factorised above");
-            self.substitute(d, factors, &mut f);
+            self.substitute(factors, &mut f);
             for (xa, fa) in x.iter_mut().zip(&f) {
                 *xa -= fa;
             }
             info.iterations += 1;
-            let new = self.residual(d, &x, &mut f);
+            let new = self.residual(&x, &mut f);
             info.residual = new;
             if !new.is_finite() {
                 return Err(fail(info));
@@ -459,8 +458,7 @@ impl Geometry {
 }
 
 /// `out = a⁻¹` by Gauss–Jordan elimination with partial pivoting; `false` if singular.
-pub(super) fn invert<D: Dim>(d: D, a: &[f64], out: &mut [f64]) -> bool {
-    let m = d.get();
+pub(super) fn invert(m: usize, a: &[f64], out: &mut [f64]) -> bool {
     let mut w = a[..m * m].to_vec();
     out[..m * m].fill(0.0);
     for i in 0..m {

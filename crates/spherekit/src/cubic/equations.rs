@@ -78,35 +78,6 @@ impl SegConst {
     }
 }
 
-/// A block dimension of the slice-based solver (tangent dimensions above 3; 1 to 3 use
-/// [`FixedSolver`](super::fixed::FixedSolver)).
-pub(super) trait Dim: Copy {
-    fn get(self) -> usize;
-}
-
-#[derive(Clone, Copy)]
-pub(super) struct Dynamic(pub(super) usize);
-
-/// A dimension known at compile time (native builds: `with_dim!` of [`frames`](super::frames)).
-#[cfg(not(target_arch = "wasm32"))]
-#[derive(Clone, Copy)]
-pub(super) struct Const<const N: usize>;
-
-#[cfg(not(target_arch = "wasm32"))]
-impl<const N: usize> Dim for Const<N> {
-    #[inline(always)]
-    fn get(self) -> usize {
-        N
-    }
-}
-
-impl Dim for Dynamic {
-    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn get(self) -> usize {
-        self.0
-    }
-}
-
 /// The continuity equations in frame coordinates.
 pub(super) struct Geometry {
     pub(super) n: usize,
@@ -220,8 +191,7 @@ pub(super) fn s_matrix(e: &[f64], sigma: f64, scale: f64, out: &mut [f64]) {
 
 /// `out = a·b` for `m × m` row-major blocks.
 #[inline]
-pub(super) fn mat_mul<D: Dim>(d: D, a: &[f64], b: &[f64], out: &mut [f64]) {
-    let m = d.get();
+pub(super) fn mat_mul(m: usize, a: &[f64], b: &[f64], out: &mut [f64]) {
     for i in 0..m {
         for j in 0..m {
             let mut s = 0.0;
@@ -235,8 +205,7 @@ pub(super) fn mat_mul<D: Dim>(d: D, a: &[f64], b: &[f64], out: &mut [f64]) {
 
 /// `out = a·x`.
 #[inline]
-pub(super) fn mat_vec<D: Dim>(d: D, a: &[f64], x: &[f64], out: &mut [f64]) {
-    let m = d.get();
+pub(super) fn mat_vec(m: usize, a: &[f64], x: &[f64], out: &mut [f64]) {
     for i in 0..m {
         let mut s = 0.0;
         for l in 0..m {

@@ -11,14 +11,18 @@ use crate::error::{SolveError, SplineError};
 // arithmetic); the wasm build, optimised for size, leaves inlining to the compiler (15.5 KB of
 // the .wasm). Inlining changes no result: Rust contracts no float operations.
 
-/// An m-vector and an m × m block (row-major) for a fixed tangent dimension.
-pub(super) type Vf<const M: usize> = [f64; M];
-type Bf<const M: usize> = [[f64; M]; M];
+/// The tangent dimension of this solver (a smaller one is padded with zeros,
+/// [`FixedSolver::new`]).
+const M: usize = 3;
+
+/// An M-vector and an M × M block (row-major).
+pub(super) type Vf = [f64; M];
+type Bf = [[f64; M]; M];
 
 /// `[f(0), …, f(M − 1)]`, always inlined (`vf` is not, in the solver's
 /// loops, and its call per vector cost more than the arithmetic).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn vf<const M: usize>(f: impl Fn(usize) -> f64) -> Vf<M> {
+pub(super) fn vf(f: impl Fn(usize) -> f64) -> Vf {
     let mut out = [0.0; M];
     for (a, o) in out.iter_mut().enumerate() {
         *o = f(a);
@@ -28,7 +32,7 @@ pub(super) fn vf<const M: usize>(f: impl Fn(usize) -> f64) -> Vf<M> {
 
 /// The block `[f(i, j)]`, as [`vf`].
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn bf<const M: usize>(f: impl Fn(usize, usize) -> f64) -> Bf<M> {
+fn bf(f: impl Fn(usize, usize) -> f64) -> Bf {
     let mut out = [[0.0; M]; M];
     for (i, row) in out.iter_mut().enumerate() {
         for (j, o) in row.iter_mut().enumerate() {
@@ -39,13 +43,13 @@ fn bf<const M: usize>(f: impl Fn(usize, usize) -> f64) -> Bf<M> {
 }
 
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn dotf<const M: usize>(a: &Vf<M>, b: &Vf<M>) -> f64 {
+fn dotf(a: &Vf, b: &Vf) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// `x ← S x`, as [`apply_s`](super::equations::apply_s).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn apply_sf<const M: usize>(e: &Vf<M>, sigma: f64, x: &mut Vf<M>) {
+fn apply_sf(e: &Vf, sigma: f64, x: &mut Vf) {
     let c = (1.0 - sigma) * dotf(e, x);
     for (xi, ei) in x.iter_mut().zip(e) {
         *xi = sigma * *xi + c * ei;
@@ -54,7 +58,7 @@ fn apply_sf<const M: usize>(e: &Vf<M>, sigma: f64, x: &mut Vf<M>) {
 
 /// `T(u)` added to `y`, as [`add_t`](super::equations::add_t); returns `|T(u)|²`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn add_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, u: &Vf<M>, y: &mut Vf<M>) -> f64 {
+fn add_tf(sc: &SegConst, e: &Vf, u: &Vf, y: &mut Vf) -> f64 {
     let up = dotf(u, e);
     let uu = dotf(u, u);
     let perp2 = (uu - up * up).max(0.0);
@@ -72,7 +76,7 @@ fn add_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, u: &Vf<M>, y: &mut Vf<M>) ->
 /// The symmetric bilinear form of `T` (`T(u) = B(u, u)`, [`add_tf`]):
 /// `B(a, b) = κ(a·b − (a·ê)(b·ê))·ê + (sinc′ θ)·((a·ê)·b + (b·ê)·a − 2(a·ê)(b·ê)·ê)`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn bilinear_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, a: &Vf<M>, b: &Vf<M>) -> Vf<M> {
+fn bilinear_tf(sc: &SegConst, e: &Vf, a: &Vf, b: &Vf) -> Vf {
     let (ae, be) = (dotf(a, e), dotf(b, e));
     let c1 = sc.kappa * (dotf(a, b) - ae * be) - 2.0 * sc.dsinc * ae * be;
     vf(|i| c1 * e[i] + sc.dsinc * (ae * b[i] + be * a[i]))
@@ -80,7 +84,7 @@ fn bilinear_tf<const M: usize>(sc: &SegConst, e: &Vf<M>, a: &Vf<M>, b: &Vf<M>) -
 
 /// `zₖ ← zₖ − l·zₖ₋₁`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn eliminate_with<const M: usize>(l: &Bf<M>, k: usize, z: &mut [Vf<M>]) {
+fn eliminate_with(l: &Bf, k: usize, z: &mut [Vf]) {
     let t = mat_vecf(l, &z[k - 1]);
     for a in 0..M {
         z[k][a] -= t[a];
@@ -102,7 +106,7 @@ fn put<T>(v: &mut Vec<T>, k: usize, value: T) {
 /// `worst² = max(worst², |f|²/scale²)`, the division only for a row that raises it (infinite
 /// for a non-finite residual).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn raise_worst<const M: usize>(f: &Vf<M>, scale2: f64, worst2: &mut f64) {
+fn raise_worst(f: &Vf, scale2: f64, worst2: &mut f64) {
     let fn2 = dotf(f, f);
     if fn2 > *worst2 * scale2 || !fn2.is_finite() {
         *worst2 = if fn2.is_finite() && scale2 > 0.0 {
@@ -115,7 +119,7 @@ fn raise_worst<const M: usize>(f: &Vf<M>, scale2: f64, worst2: &mut f64) {
 
 /// `scale·(σ·I + (1 − σ)·ê êᵀ)`, as [`s_matrix`](super::equations::s_matrix).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_matrixf<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
+fn s_matrixf(e: &Vf, sigma: f64, scale: f64) -> Bf {
     let mut out = [[0.0; M]; M];
     for i in 0..M {
         for j in 0..M {
@@ -128,22 +132,22 @@ fn s_matrixf<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
 
 /// `scale·S·x` for a block `x`, `S = σ·I + (1 − σ)·ê êᵀ`, without forming `S`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_left<const M: usize>(e: &Vf<M>, sigma: f64, scale: f64, x: &Bf<M>) -> Bf<M> {
-    let ex: Vf<M> = vf(|j| (0..M).map(|l| e[l] * x[l][j]).sum());
+fn s_left(e: &Vf, sigma: f64, scale: f64, x: &Bf) -> Bf {
+    let ex: Vf = vf(|j| (0..M).map(|l| e[l] * x[l][j]).sum());
     let (a, b) = (scale * sigma, scale * (1.0 - sigma));
     bf(|i, j| a * x[i][j] + b * e[i] * ex[j])
 }
 
 /// `scale·x·S` for a block `x`, as [`s_left`].
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_right<const M: usize>(x: &Bf<M>, e: &Vf<M>, sigma: f64, scale: f64) -> Bf<M> {
-    let xe: Vf<M> = vf(|i| dotf(&x[i], e));
+fn s_right(x: &Bf, e: &Vf, sigma: f64, scale: f64) -> Bf {
+    let xe: Vf = vf(|i| dotf(&x[i], e));
     let (a, b) = (scale * sigma, scale * (1.0 - sigma));
     bf(|i, j| a * x[i][j] + b * xe[i] * e[j])
 }
 
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mat_mulf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
+fn mat_mulf(a: &Bf, b: &Bf) -> Bf {
     let mut out = [[0.0; M]; M];
     for i in 0..M {
         for j in 0..M {
@@ -159,7 +163,7 @@ fn mat_mulf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
 
 /// `a·bᵀ`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mat_mul_tf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
+fn mat_mul_tf(a: &Bf, b: &Bf) -> Bf {
     let mut out = [[0.0; M]; M];
     for i in 0..M {
         for j in 0..M {
@@ -170,7 +174,7 @@ fn mat_mul_tf<const M: usize>(a: &Bf<M>, b: &Bf<M>) -> Bf<M> {
 }
 
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mat_vecf<const M: usize>(a: &Bf<M>, x: &Vf<M>) -> Vf<M> {
+fn mat_vecf(a: &Bf, x: &Vf) -> Vf {
     let mut out = [0.0; M];
     for i in 0..M {
         let mut s = 0.0;
@@ -182,96 +186,30 @@ fn mat_vecf<const M: usize>(a: &Bf<M>, x: &Vf<M>) -> Vf<M> {
     out
 }
 
-/// `a⁻¹` for the pivot blocks of the Jacobian: the adjugate over the determinant for
-/// `M ≤ 3` (branch-free, one division; the blocks are diagonally dominant, and a less accurate
-/// inverse would only slow Newton's convergence, never change the residual it stops at), the
-/// elimination of [`invert`](super::dynamic::invert) otherwise; `None` if singular.
+/// `a⁻¹` for the pivot blocks of the Jacobian: the adjugate over the determinant (branch-free,
+/// one division; the blocks are diagonally dominant, and a less accurate inverse would only
+/// slow Newton's convergence, never change the residual it stops at); `None` if singular.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn invertf<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
+pub(super) fn invertf(a: &Bf) -> Option<Bf> {
     let mut out = [[0.0; M]; M];
-    match M {
-        1 => {
-            out[0][0] = 1.0 / a[0][0];
-            return (a[0][0] != 0.0 && out[0][0].is_finite()).then_some(out);
-        }
-        2 => {
-            let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
-            let r = 1.0 / det;
-            out[0][0] = a[1][1] * r;
-            out[0][1] = -a[0][1] * r;
-            out[1][0] = -a[1][0] * r;
-            out[1][1] = a[0][0] * r;
-            return (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite()))
-                .then_some(out);
-        }
-        3 => {
-            let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
-            let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
-            let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
-            let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
-            let r = 1.0 / det;
-            out[0][0] = c00 * r;
-            out[1][0] = c01 * r;
-            out[2][0] = c02 * r;
-            out[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * r;
-            out[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * r;
-            out[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * r;
-            out[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * r;
-            out[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * r;
-            out[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * r;
-            return (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite()))
-                .then_some(out);
-        }
-        _ => {}
-    }
-    invert_gj(a)
+    let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+    let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+    let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+    let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+    let r = 1.0 / det;
+    out[0][0] = c00 * r;
+    out[1][0] = c01 * r;
+    out[2][0] = c02 * r;
+    out[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * r;
+    out[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * r;
+    out[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * r;
+    out[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * r;
+    out[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * r;
+    out[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * r;
+    (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite())).then_some(out)
 }
 
-/// `a⁻¹` by the elimination of [`invert`](super::dynamic::invert); `None` if singular.
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn invert_gj<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
-    let mut w = *a;
-    let mut out = [[0.0; M]; M];
-    for (i, row) in out.iter_mut().enumerate() {
-        row[i] = 1.0;
-    }
-    for col in 0..M {
-        let piv = (col..M).fold(col, |p, r| {
-            if w[r][col].abs() > w[p][col].abs() {
-                r
-            } else {
-                p
-            }
-        });
-        let pv = w[piv][col];
-        if pv == 0.0 || !pv.is_finite() {
-            return None;
-        }
-        if piv != col {
-            w.swap(piv, col);
-            out.swap(piv, col);
-        }
-        let inv = 1.0 / pv;
-        for j in 0..M {
-            w[col][j] *= inv;
-            out[col][j] *= inv;
-        }
-        for r in 0..M {
-            if r != col {
-                let f = w[r][col];
-                if f != 0.0 {
-                    for j in 0..M {
-                        w[r][j] -= f * w[col][j];
-                        out[r][j] -= f * out[col][j];
-                    }
-                }
-            }
-        }
-    }
-    Some(out)
-}
-
-/// The solver for a fixed tangent dimension `M`: the continuity equations of [`Geometry`] with
+/// The solver for tangent dimensions up to 3: the continuity equations of [`Geometry`] with
 /// arrays for vectors and blocks, and a workspace allocated once per solve.
 ///
 /// Each Newton or chord step is two sweeps over the keys. The forward sweep evaluates the
@@ -279,18 +217,18 @@ pub(super) fn invert_gj<const M: usize>(a: &Bf<M>) -> Option<Bf<M>> {
 /// refactorises, the same sweep builds the Jacobian's row and the factors first), so the
 /// arithmetic of the residual overlaps the dependent chain of the elimination. The backward
 /// sweep substitutes, one block product deep per key (`δₖ = D̃ₖ⁻¹zₖ − Gₖ δₖ₊₁`).
-pub(super) struct FixedSolver<'g, const M: usize> {
+pub(super) struct FixedSolver<'g> {
     g: &'g Geometry,
-    e: Vec<Vf<M>>,
-    hol: Bf<M>,
-    fixed: Option<(Vf<M>, Vf<M>)>,
+    e: Vec<Vf>,
+    hol: Bf,
+    fixed: Option<(Vf, Vf)>,
     /// Per row of the block tridiagonal part, its factors.
-    fac: Vec<RowFactors<M>>,
+    fac: Vec<RowFactors>,
     /// Per row, from the last evaluation of the equations (the factorising sweep): the squared
     /// size of the row's terms, and `Wₖ`, the end velocity `S⁻¹H̃ᵀ(xₖ − x̄ₖ)` of the row's
     /// nonlinear term at the deviation of `x` from the point `x̄` of the factorisation.
     scale2: Vec<f64>,
-    dev: Vec<Vf<M>>,
+    dev: Vec<Vf>,
     /// From the last evaluation, the largest `Lₖ²/scale2ₖ` and `Qₖ²/scale2ₖ`, where
     /// `Lₖω + Qₖω²` bounds how much the row's terms can move when no unknown moves by more
     /// than `ω` (see [`bound`](Self::bound)), and since then the largest `|Wₖ|²`, which bounds
@@ -300,30 +238,30 @@ pub(super) struct FixedSolver<'g, const M: usize> {
     dev2: f64,
     /// Closed: the border column (eliminated in the forward sweep, then `Zₖ`), `A_{n−1}`,
     /// `D_{n−1}`, `C_{n−1}`, the inverse Schur complement of the last unknown.
-    border: Vec<Bf<M>>,
-    a_last: Bf<M>,
-    d_last: Bf<M>,
-    c_last: Bf<M>,
-    schur_inv: Bf<M>,
+    border: Vec<Bf>,
+    a_last: Bf,
+    d_last: Bf,
+    c_last: Bf,
+    schur_inv: Bf,
 }
 
 /// One row of the continuity equations: its residual, the squared size of its terms, and its
 /// diagonal Jacobian block.
-struct Row<const M: usize> {
-    f: Vf<M>,
+struct Row {
+    f: Vf,
     scale2: f64,
     /// `Lₖ` and `Qₖ`: the row's terms move by at most `Lₖω + Qₖω²` when no unknown moves by
     /// more than `ω`.
     lip: f64,
     quad: f64,
-    d: Bf<M>,
+    d: Bf,
 }
 
 /// The block LU factors of one row: `Lₖ = Aₖ D̃ₖ₋₁⁻¹`, `D̃ₖ⁻¹` and `Gₖ = D̃ₖ⁻¹ Cₖ`.
-struct RowFactors<const M: usize> {
-    l: Bf<M>,
-    dinv: Bf<M>,
-    gm: Bf<M>,
+struct RowFactors {
+    l: Bf,
+    dinv: Bf,
+    gm: Bf,
 }
 
 /// The factorisation met a singular pivot block.
@@ -333,14 +271,14 @@ pub(super) struct Singular;
     clippy::needless_range_loop,
     reason = "element loops over the fixed-size blocks, indexed like the formulas"
 )]
-impl<'g, const M: usize> FixedSolver<'g, M> {
+impl<'g> FixedSolver<'g> {
     /// The solver for `g`, of tangent dimension `g.m ≤ M`: a smaller dimension is padded with
     /// zero coordinates (zero directions, fixed velocities and unknowns, an identity holonomy),
     /// on which the equations decouple into `σ·0 = 0`; the padded unknowns stay exactly 0.
     pub(super) fn new(g: &'g Geometry) -> Self {
         let m = g.m;
         debug_assert!(m <= M, "tangent dimension {m} above {M}");
-        let arr = |s: &[f64]| -> Vf<M> { vf(|a| if a < m { s[a] } else { 0.0 }) };
+        let arr = |s: &[f64]| -> Vf { vf(|a| if a < m { s[a] } else { 0.0 }) };
         let e = g.ehat.chunks_exact(m).map(arr).collect();
         let mut hol = [[0.0; M]; M];
         if g.closed {
@@ -385,13 +323,13 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
 
     /// `Hᵀ·y`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn hol_t(&self, y: &Vf<M>) -> Vf<M> {
+    fn hol_t(&self, y: &Vf) -> Vf {
         vf(|b| (0..M).map(|a| self.hol[a][b] * y[a]).sum())
     }
 
     /// The block `Aₖ` of a non-fixed row (the coupling to the unknown before; `seam`: the first
     /// row of a loop, coupled across the seam).
-    fn a_block(&self, k: usize, seam: bool) -> Bf<M> {
+    fn a_block(&self, k: usize, seam: bool) -> Bf {
         let p = if seam { self.g.n - 1 } else { k - 1 };
         let sc = &self.g.seg[p];
         let s = s_matrixf(&self.e[p], sc.sinc, sc.c2);
@@ -400,7 +338,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
 
     /// The block `Cₖ` of a non-fixed row (the coupling to the unknown after; `seam`: the last
     /// row of a loop).
-    fn c_block(&self, k: usize, seam: bool) -> Bf<M> {
+    fn c_block(&self, k: usize, seam: bool) -> Bf {
         let sc = &self.g.seg[k];
         let c = s_matrixf(&self.e[k], sc.inv_sinc, sc.c2);
         if seam { mat_mul_tf(&c, &self.hol) } else { c }
@@ -409,7 +347,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// `S⁻¹ H̃ᵀ x_{seg+1}` (the end velocity of segment `seg` in its transported frame; the
     /// holonomy only across the seam).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn end_velocity(&self, seg: usize, seam: bool, x: &[Vf<M>]) -> Vf<M> {
+    fn end_velocity(&self, seg: usize, seam: bool, x: &[Vf]) -> Vf {
         let mut u = if seam { self.hol_t(&x[0]) } else { x[seg + 1] };
         apply_sf(&self.e[seg], self.g.seg[seg].inv_sinc, &mut u);
         u
@@ -419,15 +357,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// (`w_next`) the key; `first` and `last` say whether `k` is the first or last key (the
     /// callers pass constants, so the interior rows have no branches).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn row(
-        &self,
-        k: usize,
-        first: bool,
-        last: bool,
-        x: &[Vf<M>],
-        w_prev: &Vf<M>,
-        w_next: &Vf<M>,
-    ) -> Row<M> {
+    fn row(&self, k: usize, first: bool, last: bool, x: &[Vf], w_prev: &Vf, w_next: &Vf) -> Row {
         let g = self.g;
         let n = g.n;
         let zero = [[0.0; M]; M];
@@ -491,11 +421,11 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             // β·I + ê qᵀ + γ·w⊥ êᵀ with q = α·w⊥ − β·ê.
             let u = w_prev;
             let up = dotf(u, e);
-            let w_perp: Vf<M> = vf(|i| u[i] - up * e[i]);
+            let w_perp: Vf = vf(|i| u[i] - up * e[i]);
             let alpha = 2.0 * sc.inv_sinc * sc.kappa;
             let beta = 2.0 * sc.inv_sinc * sc.dsinc * up;
             let gamma = 2.0 * sc.dsinc;
-            let q: Vf<M> = vf(|j| alpha * w_perp[j] - beta * e[j]);
+            let q: Vf = vf(|j| alpha * w_perp[j] - beta * e[j]);
             let mut dt = [[0.0; M]; M];
             for i in 0..M {
                 for j in 0..M {
@@ -539,8 +469,8 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// sweep, from the right-hand side in `z` that [`linear_step`](Self::linear_step) left.
     pub(super) fn sweep(
         &mut self,
-        x: &mut [Vf<M>],
-        z: &mut [Vf<M>],
+        x: &mut [Vf],
+        z: &mut [Vf],
         ul: Option<&[f64]>,
     ) -> Result<f64, Singular> {
         let g = self.g;
@@ -578,9 +508,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         &mut self,
         k: usize,
         first: bool,
-        x: &[Vf<M>],
-        z: &mut [Vf<M>],
-        w_prev: &mut Vf<M>,
+        x: &[Vf],
+        z: &mut [Vf],
+        w_prev: &mut Vf,
         worst2: &mut f64,
     ) -> Result<(), Singular> {
         self.sweep_row(k, first, !first, x, z, w_prev, worst2)
@@ -596,9 +526,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         k: usize,
         first: bool,
         last: bool,
-        x: &[Vf<M>],
-        z: &mut [Vf<M>],
-        w_prev: &mut Vf<M>,
+        x: &[Vf],
+        z: &mut [Vf],
+        w_prev: &mut Vf,
         worst2: &mut f64,
     ) -> Result<(), Singular> {
         let g = self.g;
@@ -688,14 +618,14 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
 
     /// `zₖ ← zₖ − Lₖ zₖ₋₁`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn eliminate_row(&self, k: usize, z: &mut [Vf<M>]) {
+    fn eliminate_row(&self, k: usize, z: &mut [Vf]) {
         eliminate_with(&self.fac[k].l, k, z);
     }
 
     /// The forward elimination of a chord step: `z` holds the residual `F(x)` (from
     /// [`back`](Self::back)'s update), and is overwritten by `L⁻¹F(x)` (the last row of a loop
     /// is the Schur row, kept whole).
-    fn eliminate(&self, z: &mut [Vf<M>]) {
+    fn eliminate(&self, z: &mut [Vf]) {
         let rows = self.g.n - usize::from(self.g.closed);
         for k in 1..rows {
             self.eliminate_row(k, z);
@@ -715,7 +645,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// exactly; `Wₖ` becomes `W − s`. Rows without the term (a fixed row, the first row of an
     /// open curve) are linear and solved exactly: 0.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn update(&mut self, k: usize, d: &Vf<M>) -> Vf<M> {
+    fn update(&mut self, k: usize, d: &Vf) -> Vf {
         let g = self.g;
         let (p, seam) = if k > 0 {
             (k - 1, false)
@@ -737,7 +667,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let (sc, e) = (&g.seg[p], &self.e[p]);
         apply_sf(e, sc.inv_sinc, &mut s);
         let w = &mut self.dev[k];
-        let a: Vf<M> = vf(|i| s[i] - 2.0 * w[i]);
+        let a: Vf = vf(|i| s[i] - 2.0 * w[i]);
         for i in 0..M {
             w[i] -= s[i];
         }
@@ -769,9 +699,9 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// `ul` receives `1/πₖ` (the forward sweep leaves the diagonal `dₖ` there).
     pub(super) fn linear_step(
         &self,
-        x: &mut [Vf<M>],
+        x: &mut [Vf],
         piv: &mut [f64],
-        z: &mut [Vf<M>],
+        z: &mut [Vf],
         ul: &mut [f64],
     ) -> f64 {
         let g = self.g;
@@ -842,7 +772,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
             z_prev = z;
             inv_prev = inv;
         }
-        let mut next: Vf<M> = vf(|a| x[n - 1][a] * piv[n - 1]);
+        let mut next: Vf = vf(|a| x[n - 1][a] * piv[n - 1]);
         x[n - 1] = vf(|a| -next[a]);
         // The correction's right-hand side `T(wₖ)` (the residual at the new x) and its
         // elimination from the last row up, as each `xₖ` comes out (see `correct`).
@@ -888,7 +818,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// The nonlinear term `T(wₖ)` of row `k` of an open curve at `xₖ` (0 for the rows without
     /// it: the first and the fixed ones).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn tee(&self, k: usize, xk: &Vf<M>) -> Vf<M> {
+    fn tee(&self, k: usize, xk: &Vf) -> Vf {
         let mut f = [0.0; M];
         if k > 0 && !(self.fixed.is_some() && k + 1 == self.g.n) {
             let (sc, e) = (&self.g.seg[k - 1], &self.e[k - 1]);
@@ -907,7 +837,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// linear Jacobian (scalar pivots, as in the linear step) takes `x` about 30× closer to the
     /// solution before Newton's first factorisation.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn correct(&self, k: usize, x: &mut [Vf<M>], z: &[Vf<M>], ul: &[f64], prev: &mut Vf<M>) {
+    fn correct(&self, k: usize, x: &mut [Vf], z: &[Vf], ul: &[f64], prev: &mut Vf) {
         let g = self.g;
         let mut t = z[k];
         if k > 0 && !(self.fixed.is_some() && k + 1 == g.n) {
@@ -970,7 +900,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
     /// The backward sweep: `x ← x − J⁻¹F` from the eliminated residual `z`, which is
     /// overwritten by the residual at the new `x` ([`update`](Self::update)). Returns its
     /// largest row relative to the size of the row's terms at the last evaluation.
-    fn back(&mut self, z: &mut [Vf<M>], x: &mut [Vf<M>]) -> f64 {
+    fn back(&mut self, z: &mut [Vf], x: &mut [Vf]) -> f64 {
         let n = self.g.n;
         let mut worst2 = 0.0_f64;
         if !self.g.closed {
@@ -984,7 +914,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
                 let f = &self.fac[k];
                 let y = mat_vecf(&f.dinv, &z[k]);
                 let t = mat_vecf(&f.gm, &next);
-                let d: Vf<M> = vf(|a| y[a] - t[a]);
+                let d: Vf = vf(|a| y[a] - t[a]);
                 for a in 0..M {
                     x[k][a] -= d[a];
                 }
@@ -1013,7 +943,7 @@ impl<'g, const M: usize> FixedSolver<'g, M> {
         let last = mat_vecf(&self.schur_inv, &rhs);
         for k in 0..rows {
             let t = mat_vecf(&self.border[k], &last);
-            let d: Vf<M> = vf(|a| z[k][a] - t[a]);
+            let d: Vf = vf(|a| z[k][a] - t[a]);
             for a in 0..M {
                 x[k][a] -= d[a];
             }

@@ -4,9 +4,7 @@
 //! Orthonormal tangent frames at the keys, parallel transported along the segments.
 
 use super::Segment;
-#[cfg(not(target_arch = "wasm32"))]
-use super::equations::Const;
-use super::equations::{Dim, Dynamic, Geometry, apply_s, dot};
+use super::equations::{Geometry, apply_s, dot};
 
 /// Orthonormal tangent frames at the keys, in span coordinates, parallel transported along
 /// the segments from a frame at the first key.
@@ -17,20 +15,20 @@ pub(super) struct Frames {
     data: Vec<f64>,
 }
 
-/// Calls `$body` with `$d` bound to the dimension `$r` as a [`Dim`]: a constant for 4 (the
-/// span of keys on S³, so that the short loops over coordinates are unrolled), [`Dynamic`]
-/// otherwise. The wasm build has the [`Dynamic`] copy only (the same loops, so the same
-/// bits).
+/// Calls `$body` with `$d` bound to the dimension `$r`. Natively 4 (the span of keys on S³)
+/// has an arm of its own: the callees are inlined by force, so that copy is compiled for the
+/// constant 4, with the short loops over coordinates unrolled. The wasm build has one copy
+/// (the same operations, so the same bits).
 #[cfg(not(target_arch = "wasm32"))]
 macro_rules! with_dim {
     ($r:expr, |$d:ident| $body:expr) => {
         match $r {
             4 => {
-                let $d = Const::<4>;
+                let $d: usize = 4;
                 $body
             }
             r => {
-                let $d = Dynamic(r);
+                let $d: usize = r;
                 $body
             }
         }
@@ -39,7 +37,7 @@ macro_rules! with_dim {
 #[cfg(target_arch = "wasm32")]
 macro_rules! with_dim {
     ($r:expr, |$d:ident| $body:expr) => {{
-        let $d = Dynamic($r);
+        let $d: usize = $r;
         $body
     }};
 }
@@ -58,14 +56,13 @@ impl Frames {
     }
 
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn build<D: Dim>(
-        d: D,
+    fn build(
+        r: usize,
         xs: &[f64],
         es: &[f64],
         sin_cos: &[(f64, f64)],
         closed: bool,
     ) -> (Self, Vec<f64>) {
-        let r = d.get();
         let m = r - 1;
         let n = xs.len() / r;
         let count = n + usize::from(closed);
@@ -136,16 +133,15 @@ impl Frames {
     }
 
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn output_in<D: Dim, V: Clone>(
+    fn output_in<V: Clone>(
         &self,
-        d: D,
+        r: usize,
         geo: &Geometry,
         x: &[f64],
         es: &[f64],
         keys: &[V],
         ambient: impl Fn(&[f64]) -> V,
     ) -> (Vec<V>, Vec<Segment<V>>) {
-        let r = d.get();
         let m = r - 1;
         let nseg = geo.seg.len();
         let mut velocities = Vec::with_capacity(geo.n);
@@ -153,7 +149,7 @@ impl Frames {
         let (mut v, mut big_u, mut coef) = (vec![0.0; r], vec![0.0; r], vec![0.0; r]);
         let mut u = vec![0.0; m];
         for k in 0..geo.n {
-            self.combine_in(d, k, &x[k * m..(k + 1) * m], &mut v);
+            self.combine_in(r, k, &x[k * m..(k + 1) * m], &mut v);
             velocities.push(ambient(&v));
             if k == nseg {
                 break;
@@ -166,7 +162,7 @@ impl Frames {
             } else {
                 &x[(k + 1) * m..(k + 2) * m]
             };
-            self.combine_in(d, k, next, &mut big_u);
+            self.combine_in(r, k, next, &mut big_u);
             let (sc, e) = (&geo.seg[k], &es[k * r..(k + 1) * r]);
             apply_s(e, sc.inv_sinc, &mut big_u[..r]);
             let (h, theta) = (sc.h, sc.theta);
@@ -195,8 +191,7 @@ impl Frames {
 
     /// `out = Σₐ cₐ·(frame k)ₐ`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn combine_in<D: Dim>(&self, d: D, k: usize, c: &[f64], out: &mut [f64]) {
-        let r = d.get();
+    fn combine_in(&self, r: usize, k: usize, c: &[f64], out: &mut [f64]) {
         let out = &mut out[..r];
         out.fill(0.0);
         let frame = &self.data[k * c.len() * r..(k + 1) * c.len() * r];

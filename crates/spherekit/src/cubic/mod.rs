@@ -42,7 +42,7 @@ use crate::{
     sn::SnPoint,
 };
 
-use equations::{Dynamic, Geometry, SegConst, dot, sinc_deriv};
+use equations::{Geometry, SegConst, dot, sinc_deriv};
 use fixed::FixedSolver;
 use frames::Frames;
 
@@ -452,8 +452,8 @@ impl<P: Manifold> CubicSpline<P> {
             )
         } else {
             match m {
-                1..=3 => FixedSolver::<3>::new(&geo).solve(),
-                _ => geo.solve(Dynamic(m)),
+                1..=3 => FixedSolver::new(&geo).solve(),
+                _ => geo.solve(),
             }?
         };
 
