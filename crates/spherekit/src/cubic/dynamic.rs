@@ -4,7 +4,9 @@
 //! The solver for tangent dimensions above 3, on slices: Newton's method on the block
 //! tridiagonal (closed: bordered cyclic) system, every step evaluated and factorised in full.
 
-use super::equations::{Geometry, add_t, apply_s, dot, mat_mul, mat_vec, norm, s_matrix};
+use super::equations::{
+    Geometry, add_t, apply_s, dot, mat_mul, mat_mul_t, mat_vec, norm, s_matrix,
+};
 use super::{CubicSolveInfo, MAX_ITERATIONS, MAX_RESIDUAL, TARGET_RESIDUAL};
 use crate::error::{SolveError, SplineError};
 
@@ -73,7 +75,7 @@ impl Geometry {
                     }
                     self.to_segment_end(p, xk, u);
                     apply_s(e, sc.inv_sinc, u);
-                    let tn = add_t(sc, e, u, y);
+                    let tn = add_t(sc, e, u, y).sqrt();
                     let c6 = 6.0 * sc.theta / (sc.h * sc.h);
                     for (ya, ea) in y.iter_mut().zip(e) {
                         *ya -= c6 * ea;
@@ -151,13 +153,7 @@ impl Geometry {
                     let sc = &self.seg[nx];
                     s_matrix(self.ehat(nx), sc.inv_sinc, 2.0 / sc.h, &mut tmp);
                     if self.is_seam(nx) {
-                        // tmp · Hᵀ
-                        for i in 0..m {
-                            for j in 0..m {
-                                c_blk[i * m + j] =
-                                    (0..m).map(|l| tmp[i * m + l] * self.hol[j * m + l]).sum();
-                            }
-                        }
+                        mat_mul_t(m, &tmp, &self.hol, &mut c_blk);
                     } else {
                         c_blk.copy_from_slice(&tmp);
                     }
@@ -300,19 +296,15 @@ impl Geometry {
                 }
             }
             if self.is_seam(p) {
-                // H tmp Hᵀ.
-                let h = &self.hol;
+                // H tmp Hᵀ. (`mat_mul` accumulates from +0, where a sum from −0 once stood here:
+                // they differ only in the sign of an entry that is exactly zero, and adding
+                // `H tmp Hᵀ` to `d_blk`, all +0 until then, erases that sign.)
                 let mut t2 = vec![0.0; m * m];
-                for i in 0..m {
-                    for j in 0..m {
-                        t2[i * m + j] = (0..m).map(|l| h[i * m + l] * tmp[l * m + j]).sum();
-                    }
-                }
-                for i in 0..m {
-                    for j in 0..m {
-                        d_blk[i * m + j] +=
-                            (0..m).map(|l| t2[i * m + l] * h[j * m + l]).sum::<f64>();
-                    }
+                mat_mul(m, &self.hol, tmp, &mut t2);
+                let mut t3 = vec![0.0; m * m];
+                mat_mul_t(m, &t2, &self.hol, &mut t3);
+                for (dv, t) in d_blk.iter_mut().zip(&t3) {
+                    *dv += t;
                 }
             } else {
                 for (dv, t) in d_blk.iter_mut().zip(tmp.iter()) {

@@ -132,9 +132,7 @@ impl Geometry {
     pub(super) fn to_segment_end(&self, seg: usize, y: &[f64], out: &mut [f64]) {
         let m = self.m;
         if self.is_seam(seg) {
-            for (b, o) in out.iter_mut().enumerate().take(m) {
-                *o = (0..m).map(|a| self.hol[a * m + b] * y[a]).sum();
-            }
+            mat_t_vec(m, &self.hol, y, out);
         } else {
             out.copy_from_slice(y);
         }
@@ -144,8 +142,8 @@ impl Geometry {
     pub(super) fn back_from_segment_end(&self, seg: usize, y: &[f64], out: &mut [f64]) {
         let m = self.m;
         if self.is_seam(seg) {
-            for (a, o) in out.iter_mut().enumerate().take(m) {
-                *o = (0..m).map(|b| self.hol[a * m + b] * y[b]).sum();
+            for (o, h) in out.iter_mut().zip(self.hol.chunks_exact(m)) {
+                *o = dot(h, y);
             }
         } else {
             out.copy_from_slice(y);
@@ -157,7 +155,14 @@ impl Geometry {
     }
 }
 
-/// `T(u)` added to `y` (both m-vectors in segment coordinates); returns `|T(u)|`.
+// The small helpers below are inlined by force natively (in the array solver's loops their
+// calls cost more than their arithmetic, and with the dimension a constant there the loops
+// unroll); the wasm build, optimised for size, leaves inlining to the compiler. Inlining changes
+// no result: Rust contracts no float operations. The array solver calls them on flattened
+// arrays ([`fixed`](super::fixed)).
+
+/// `T(u)` added to `y` (both m-vectors in segment coordinates); returns `|T(u)|²`.
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn add_t(sc: &SegConst, e: &[f64], u: &[f64], y: &mut [f64]) -> f64 {
     let up = dot(u, e);
     let uu = dot(u, u);
@@ -170,7 +175,7 @@ pub(super) fn add_t(sc: &SegConst, e: &[f64], u: &[f64], y: &mut [f64]) -> f64 {
         t2 += ta * ta;
         *ya += ta;
     }
-    t2.sqrt()
+    t2
 }
 
 #[inline]
@@ -179,6 +184,7 @@ pub(super) fn norm(x: &[f64]) -> f64 {
 }
 
 /// `out = scale·(σ·I + (1 − σ)·ê êᵀ)`.
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn s_matrix(e: &[f64], sigma: f64, scale: f64, out: &mut [f64]) {
     let m = e.len();
     for i in 0..m {
@@ -190,7 +196,7 @@ pub(super) fn s_matrix(e: &[f64], sigma: f64, scale: f64, out: &mut [f64]) {
 }
 
 /// `out = a·b` for `m × m` row-major blocks.
-#[inline]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn mat_mul(m: usize, a: &[f64], b: &[f64], out: &mut [f64]) {
     for i in 0..m {
         for j in 0..m {
@@ -203,8 +209,18 @@ pub(super) fn mat_mul(m: usize, a: &[f64], b: &[f64], out: &mut [f64]) {
     }
 }
 
+/// `out = a·bᵀ`, entry by entry the [`dot`] of a row of `a` and a row of `b`.
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+pub(super) fn mat_mul_t(m: usize, a: &[f64], b: &[f64], out: &mut [f64]) {
+    for i in 0..m {
+        for j in 0..m {
+            out[i * m + j] = dot(&a[i * m..(i + 1) * m], &b[j * m..(j + 1) * m]);
+        }
+    }
+}
+
 /// `out = a·x`.
-#[inline]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn mat_vec(m: usize, a: &[f64], x: &[f64], out: &mut [f64]) {
     for i in 0..m {
         let mut s = 0.0;
@@ -215,13 +231,21 @@ pub(super) fn mat_vec(m: usize, a: &[f64], x: &[f64], out: &mut [f64]) {
     }
 }
 
-#[inline]
+/// `out = aᵀ·x`, summed as [`dot`].
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+pub(super) fn mat_t_vec(m: usize, a: &[f64], x: &[f64], out: &mut [f64]) {
+    for (j, o) in out[..m].iter_mut().enumerate() {
+        *o = (0..m).map(|l| a[l * m + j] * x[l]).sum();
+    }
+}
+
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// `x ← S x` with `S = σ·I + (1 − σ)·ê êᵀ` (pass `1/sinc θ` for `S⁻¹`).
-#[inline]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn apply_s(ehat: &[f64], sigma: f64, x: &mut [f64]) {
     let c = (1.0 - sigma) * dot(ehat, x);
     for (xi, ei) in x.iter_mut().zip(ehat) {

@@ -3,13 +3,14 @@
 
 //! The solver for tangent dimensions 1 to 3, on arrays.
 
-use super::equations::{Geometry, SegConst};
+use super::equations::{
+    Geometry, SegConst, add_t, apply_s, dot, mat_mul, mat_mul_t, mat_t_vec, mat_vec, s_matrix,
+};
 use super::{CubicSolveInfo, MAX_ITERATIONS, MAX_RESIDUAL, TARGET_RESIDUAL};
 use crate::error::{SolveError, SplineError};
 
-// The solver's small helpers are inlined by force natively (their calls cost more than their
-// arithmetic); the wasm build, optimised for size, leaves inlining to the compiler (15.5 KB of
-// the .wasm). Inlining changes no result: Rust contracts no float operations.
+// The solver's small helpers are inlined by force natively, as those of `equations` (the wasm
+// build leaves inlining to the compiler: forcing it there cost 15.5 KB of the .wasm).
 
 /// The tangent dimension of this solver (a smaller one is padded with zeros,
 /// [`FixedSolver::new`]).
@@ -42,50 +43,19 @@ fn bf(f: impl Fn(usize, usize) -> f64) -> Bf {
     out
 }
 
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn dotf(a: &Vf, b: &Vf) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// `x ← S x`, as [`apply_s`](super::equations::apply_s).
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn apply_sf(e: &Vf, sigma: f64, x: &mut Vf) {
-    let c = (1.0 - sigma) * dotf(e, x);
-    for (xi, ei) in x.iter_mut().zip(e) {
-        *xi = sigma * *xi + c * ei;
-    }
-}
-
-/// `T(u)` added to `y`, as [`add_t`](super::equations::add_t); returns `|T(u)|²`.
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn add_tf(sc: &SegConst, e: &Vf, u: &Vf, y: &mut Vf) -> f64 {
-    let up = dotf(u, e);
-    let uu = dotf(u, u);
-    let perp2 = (uu - up * up).max(0.0);
-    let c1 = perp2 * sc.kappa;
-    let c2 = 2.0 * sc.dsinc * up;
-    let mut t2 = 0.0;
-    for ((ya, ua), ea) in y.iter_mut().zip(u).zip(e) {
-        let ta = c1 * ea + c2 * (ua - up * ea);
-        t2 += ta * ta;
-        *ya += ta;
-    }
-    t2
-}
-
-/// The symmetric bilinear form of `T` (`T(u) = B(u, u)`, [`add_tf`]):
+/// The symmetric bilinear form of `T` (`T(u) = B(u, u)`, [`add_t`]):
 /// `B(a, b) = κ(a·b − (a·ê)(b·ê))·ê + (sinc′ θ)·((a·ê)·b + (b·ê)·a − 2(a·ê)(b·ê)·ê)`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn bilinear_tf(sc: &SegConst, e: &Vf, a: &Vf, b: &Vf) -> Vf {
-    let (ae, be) = (dotf(a, e), dotf(b, e));
-    let c1 = sc.kappa * (dotf(a, b) - ae * be) - 2.0 * sc.dsinc * ae * be;
+fn bilinear_t(sc: &SegConst, e: &Vf, a: &Vf, b: &Vf) -> Vf {
+    let (ae, be) = (dot(a, e), dot(b, e));
+    let c1 = sc.kappa * (dot(a, b) - ae * be) - 2.0 * sc.dsinc * ae * be;
     vf(|i| c1 * e[i] + sc.dsinc * (ae * b[i] + be * a[i]))
 }
 
 /// `zₖ ← zₖ − l·zₖ₋₁`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn eliminate_with(l: &Bf, k: usize, z: &mut [Vf]) {
-    let t = mat_vecf(l, &z[k - 1]);
+    let t = apply(l, &z[k - 1]);
     for a in 0..M {
         z[k][a] -= t[a];
     }
@@ -107,7 +77,7 @@ fn put<T>(v: &mut Vec<T>, k: usize, value: T) {
 /// for a non-finite residual).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn raise_worst(f: &Vf, scale2: f64, worst2: &mut f64) {
-    let fn2 = dotf(f, f);
+    let fn2 = dot(f, f);
     if fn2 > *worst2 * scale2 || !fn2.is_finite() {
         *worst2 = if fn2.is_finite() && scale2 > 0.0 {
             fn2 / scale2
@@ -117,23 +87,10 @@ fn raise_worst(f: &Vf, scale2: f64, worst2: &mut f64) {
     }
 }
 
-/// `scale·(σ·I + (1 − σ)·ê êᵀ)`, as [`s_matrix`](super::equations::s_matrix).
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_matrixf(e: &Vf, sigma: f64, scale: f64) -> Bf {
-    let mut out = [[0.0; M]; M];
-    for i in 0..M {
-        for j in 0..M {
-            let id = if i == j { sigma } else { 0.0 };
-            out[i][j] = scale * (id + (1.0 - sigma) * e[i] * e[j]);
-        }
-    }
-    out
-}
-
 /// `scale·S·x` for a block `x`, `S = σ·I + (1 − σ)·ê êᵀ`, without forming `S`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn s_left(e: &Vf, sigma: f64, scale: f64, x: &Bf) -> Bf {
-    let ex: Vf = vf(|j| (0..M).map(|l| e[l] * x[l][j]).sum());
+    let ex = apply_t(x, e);
     let (a, b) = (scale * sigma, scale * (1.0 - sigma));
     bf(|i, j| a * x[i][j] + b * e[i] * ex[j])
 }
@@ -141,48 +98,61 @@ fn s_left(e: &Vf, sigma: f64, scale: f64, x: &Bf) -> Bf {
 /// `scale·x·S` for a block `x`, as [`s_left`].
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn s_right(x: &Bf, e: &Vf, sigma: f64, scale: f64) -> Bf {
-    let xe: Vf = vf(|i| dotf(&x[i], e));
+    let xe: Vf = vf(|i| dot(&x[i], e));
     let (a, b) = (scale * sigma, scale * (1.0 - sigma));
     bf(|i, j| a * x[i][j] + b * xe[i] * e[j])
 }
 
+// The block algebra of `equations` on the solver's arrays, flattened (a block is its M × M
+// row-major slice).
+
+/// `scale·(σ·I + (1 − σ)·ê êᵀ)` ([`s_matrix`]).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mat_mulf(a: &Bf, b: &Bf) -> Bf {
+fn s_block(e: &Vf, sigma: f64, scale: f64) -> Bf {
     let mut out = [[0.0; M]; M];
-    for i in 0..M {
-        for j in 0..M {
-            let mut s = 0.0;
-            for l in 0..M {
-                s += a[i][l] * b[l][j];
-            }
-            out[i][j] = s;
-        }
-    }
+    s_matrix(e, sigma, scale, out.as_flattened_mut());
     out
 }
 
-/// `a·bᵀ`.
+/// `a·b` ([`mat_mul`]).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mat_mul_tf(a: &Bf, b: &Bf) -> Bf {
+fn mul(a: &Bf, b: &Bf) -> Bf {
     let mut out = [[0.0; M]; M];
-    for i in 0..M {
-        for j in 0..M {
-            out[i][j] = (0..M).map(|l| a[i][l] * b[j][l]).sum();
-        }
-    }
+    mat_mul(
+        M,
+        a.as_flattened(),
+        b.as_flattened(),
+        out.as_flattened_mut(),
+    );
     out
 }
 
+/// `a·bᵀ` ([`mat_mul_t`]).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mat_vecf(a: &Bf, x: &Vf) -> Vf {
+fn mul_t(a: &Bf, b: &Bf) -> Bf {
+    let mut out = [[0.0; M]; M];
+    mat_mul_t(
+        M,
+        a.as_flattened(),
+        b.as_flattened(),
+        out.as_flattened_mut(),
+    );
+    out
+}
+
+/// `a·x` ([`mat_vec`]).
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn apply(a: &Bf, x: &Vf) -> Vf {
     let mut out = [0.0; M];
-    for i in 0..M {
-        let mut s = 0.0;
-        for l in 0..M {
-            s += a[i][l] * x[l];
-        }
-        out[i] = s;
-    }
+    mat_vec(M, a.as_flattened(), x, &mut out);
+    out
+}
+
+/// `aᵀ·x` ([`mat_t_vec`]).
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn apply_t(a: &Bf, x: &Vf) -> Vf {
+    let mut out = [0.0; M];
+    mat_t_vec(M, a.as_flattened(), x, &mut out);
     out
 }
 
@@ -324,7 +294,7 @@ impl<'g> FixedSolver<'g> {
     /// `Hᵀ·y`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn hol_t(&self, y: &Vf) -> Vf {
-        vf(|b| (0..M).map(|a| self.hol[a][b] * y[a]).sum())
+        apply_t(&self.hol, y)
     }
 
     /// The block `Aₖ` of a non-fixed row (the coupling to the unknown before; `seam`: the first
@@ -332,16 +302,16 @@ impl<'g> FixedSolver<'g> {
     fn a_block(&self, k: usize, seam: bool) -> Bf {
         let p = if seam { self.g.n - 1 } else { k - 1 };
         let sc = &self.g.seg[p];
-        let s = s_matrixf(&self.e[p], sc.sinc, sc.c2);
-        if seam { mat_mulf(&self.hol, &s) } else { s }
+        let s = s_block(&self.e[p], sc.sinc, sc.c2);
+        if seam { mul(&self.hol, &s) } else { s }
     }
 
     /// The block `Cₖ` of a non-fixed row (the coupling to the unknown after; `seam`: the last
     /// row of a loop).
     fn c_block(&self, k: usize, seam: bool) -> Bf {
         let sc = &self.g.seg[k];
-        let c = s_matrixf(&self.e[k], sc.inv_sinc, sc.c2);
-        if seam { mat_mul_tf(&c, &self.hol) } else { c }
+        let c = s_block(&self.e[k], sc.inv_sinc, sc.c2);
+        if seam { mul_t(&c, &self.hol) } else { c }
     }
 
     /// `S⁻¹ H̃ᵀ x_{seg+1}` (the end velocity of segment `seg` in its transported frame; the
@@ -349,7 +319,7 @@ impl<'g> FixedSolver<'g> {
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn end_velocity(&self, seg: usize, seam: bool, x: &[Vf]) -> Vf {
         let mut u = if seam { self.hol_t(&x[0]) } else { x[seg + 1] };
-        apply_sf(&self.e[seg], self.g.seg[seg].inv_sinc, &mut u);
+        apply_s(&self.e[seg], self.g.seg[seg].inv_sinc, &mut u);
         u
     }
 
@@ -380,7 +350,7 @@ impl<'g> FixedSolver<'g> {
             for a in 0..M {
                 row.f[a] = c4 * (xk[a] - gk[a]);
             }
-            row.scale2 = c4 * c4 * (dotf(xk, xk) + dotf(gk, gk));
+            row.scale2 = c4 * c4 * (dot(xk, xk) + dot(gk, gk));
             for i in 0..M {
                 row.d[i][i] = c4;
             }
@@ -393,17 +363,17 @@ impl<'g> FixedSolver<'g> {
             let sc = &g.seg[p];
             let e = &self.e[p];
             let mut y = x[p];
-            apply_sf(e, sc.sinc, &mut y);
+            apply_s(e, sc.sinc, &mut y);
             for ya in &mut y {
                 *ya *= sc.c2;
             }
-            let lin2 = dotf(&y, &y);
-            let t2 = add_tf(sc, e, w_prev, &mut y);
+            let lin2 = dot(&y, &y);
+            let t2 = add_t(sc, e, w_prev, &mut y);
             for (ya, ea) in y.iter_mut().zip(e) {
                 *ya -= sc.c6 * ea;
             }
             let y = if seam {
-                vf(|a| (0..M).map(|b| self.hol[a][b] * y[b]).sum())
+                vf(|a| dot(&self.hol[a], &y))
             } else {
                 y
             };
@@ -415,12 +385,12 @@ impl<'g> FixedSolver<'g> {
             // `c₂S·x_{k−1}` moves by at most `c₂ω`; `T(w)` by `|B(W, W + 2w)| ≤ c_B·ω(ω + 2|w|)`
             // (`|B(a, b)| ≤ (|κ| + |sinc′|)·|a||b|`, `W = S⁻¹Δxₖ`, `|Δxₖ| ≤ |W| ≤ ω`).
             let c_b = sc.kappa.abs() + sc.dsinc.abs();
-            row.lip += sc.c2 + 2.0 * c_b * dotf(w_prev, w_prev).sqrt();
+            row.lip += sc.c2 + 2.0 * c_b * dot(w_prev, w_prev).sqrt();
             row.quad = c_b;
             // DT·S⁻¹ at the end velocity `w_prev` (the derivative of T(S⁻¹ H̃ᵀ xₖ)):
             // β·I + ê qᵀ + γ·w⊥ êᵀ with q = α·w⊥ − β·ê.
             let u = w_prev;
-            let up = dotf(u, e);
+            let up = dot(u, e);
             let w_perp: Vf = vf(|i| u[i] - up * e[i]);
             let alpha = 2.0 * sc.inv_sinc * sc.kappa;
             let beta = 2.0 * sc.inv_sinc * sc.dsinc * up;
@@ -434,7 +404,7 @@ impl<'g> FixedSolver<'g> {
                 dt[i][i] += beta;
             }
             row.d = if seam {
-                mat_mul_tf(&mat_mulf(&self.hol, &dt), &self.hol)
+                mul_t(&mul(&self.hol, &dt), &self.hol)
             } else {
                 dt
             };
@@ -446,7 +416,7 @@ impl<'g> FixedSolver<'g> {
             for a in 0..M {
                 row.f[a] += sc.c2 * w_next[a] - sc.c6 * e[a];
             }
-            row.scale2 += sc.c2 * sc.c2 * dotf(w_next, w_next) + sc.c6 * sc.c6;
+            row.scale2 += sc.c2 * sc.c2 * dot(w_next, w_next) + sc.c6 * sc.c6;
             diag += sc.c4;
             row.lip += sc.c2 * sc.inv_sinc;
         }
@@ -454,7 +424,7 @@ impl<'g> FixedSolver<'g> {
         for a in 0..M {
             row.f[a] += diag * xk[a];
         }
-        row.scale2 += diag * diag * dotf(xk, xk);
+        row.scale2 += diag * diag * dot(xk, xk);
         for i in 0..M {
             row.d[i][i] += diag;
         }
@@ -588,7 +558,7 @@ impl<'g> FixedSolver<'g> {
             let mut b = if first {
                 self.a_block(k, true)
             } else {
-                let t = mat_mulf(&l, &self.border[k - 1]);
+                let t = mul(&l, &self.border[k - 1]);
                 bf(|i, j| -t[i][j])
             };
             if merge {
@@ -657,7 +627,7 @@ impl<'g> FixedSolver<'g> {
             for i in 0..M {
                 w[i] -= d[i];
             }
-            self.dev2 = self.dev2.max(dotf(w, w));
+            self.dev2 = self.dev2.max(dot(w, w));
             return [0.0; M];
         };
         if self.fixed.is_some() && k + 1 == g.n {
@@ -665,19 +635,19 @@ impl<'g> FixedSolver<'g> {
         }
         let mut s = if seam { self.hol_t(d) } else { *d };
         let (sc, e) = (&g.seg[p], &self.e[p]);
-        apply_sf(e, sc.inv_sinc, &mut s);
+        apply_s(e, sc.inv_sinc, &mut s);
         let w = &mut self.dev[k];
         let a: Vf = vf(|i| s[i] - 2.0 * w[i]);
         for i in 0..M {
             w[i] -= s[i];
         }
-        let w2 = dotf(w, w);
+        let w2 = dot(w, w);
         if w2 > self.dev2 {
             self.dev2 = w2;
         }
-        let f = bilinear_tf(sc, e, &a, &s);
+        let f = bilinear_t(sc, e, &a, &s);
         if seam {
-            vf(|i| (0..M).map(|j| self.hol[i][j] * f[j]).sum())
+            vf(|i| dot(&self.hol[i], &f))
         } else {
             f
         }
@@ -725,7 +695,7 @@ impl<'g> FixedSolver<'g> {
                     for a in 0..M {
                         f[a] = -c4 * gk[a];
                     }
-                    scale2 = c4 * c4 * dotf(gk, gk);
+                    scale2 = c4 * c4 * dot(gk, gk);
                     d = c4;
                     ul[k] = d;
                     z = f;
@@ -747,7 +717,7 @@ impl<'g> FixedSolver<'g> {
                     if k > 0 {
                         let sc = &g.seg[k - 1];
                         let mut az = z_prev;
-                        apply_sf(&self.e[k - 1], sc.sinc, &mut az);
+                        apply_s(&self.e[k - 1], sc.sinc, &mut az);
                         let c = sc.c2 * inv_prev;
                         for a in 0..M {
                             z[a] -= c * az[a];
@@ -758,7 +728,7 @@ impl<'g> FixedSolver<'g> {
                     }
                 }
             }
-            let fn2 = dotf(&f, &f);
+            let fn2 = dot(&f, &f);
             if fn2 > worst2 * scale2 || !fn2.is_finite() {
                 worst2 = if fn2.is_finite() && scale2 > 0.0 {
                     fn2 / scale2
@@ -787,7 +757,7 @@ impl<'g> FixedSolver<'g> {
             if coupled_next {
                 let sc = &g.seg[k];
                 let mut c = next;
-                apply_sf(&self.e[k], sc.inv_sinc, &mut c);
+                apply_s(&self.e[k], sc.inv_sinc, &mut c);
                 for a in 0..M {
                     t[a] -= sc.c2 * c[a];
                 }
@@ -799,7 +769,7 @@ impl<'g> FixedSolver<'g> {
             if coupled_next {
                 let sc = &g.seg[k];
                 let c = sc.c2 * ul[k + 1];
-                apply_sf(&self.e[k], sc.inv_sinc, &mut zeta);
+                apply_s(&self.e[k], sc.inv_sinc, &mut zeta);
                 for a in 0..M {
                     r[a] -= c * zeta[a];
                 }
@@ -823,8 +793,8 @@ impl<'g> FixedSolver<'g> {
         if k > 0 && !(self.fixed.is_some() && k + 1 == self.g.n) {
             let (sc, e) = (&self.g.seg[k - 1], &self.e[k - 1]);
             let mut w = *xk;
-            apply_sf(e, sc.inv_sinc, &mut w);
-            add_tf(sc, e, &w, &mut f);
+            apply_s(e, sc.inv_sinc, &mut w);
+            add_t(sc, e, &w, &mut f);
         }
         f
     }
@@ -842,7 +812,7 @@ impl<'g> FixedSolver<'g> {
         let mut t = z[k];
         if k > 0 && !(self.fixed.is_some() && k + 1 == g.n) {
             let sc = &g.seg[k - 1];
-            apply_sf(&self.e[k - 1], sc.sinc, prev);
+            apply_s(&self.e[k - 1], sc.sinc, prev);
             for a in 0..M {
                 t[a] -= sc.c2 * prev[a];
             }
@@ -857,11 +827,11 @@ impl<'g> FixedSolver<'g> {
     fn finish_border(&mut self) -> Result<(), Singular> {
         let n = self.g.n;
         let rows = n - 1;
-        let mut next = mat_mulf(&self.fac[rows - 1].dinv, &self.border[rows - 1]);
+        let mut next = mul(&self.fac[rows - 1].dinv, &self.border[rows - 1]);
         self.border[rows - 1] = next;
         for k in (0..rows - 1).rev() {
-            let mut zk = mat_mulf(&self.fac[k].dinv, &self.border[k]);
-            let t = mat_mulf(&self.fac[k].gm, &next);
+            let mut zk = mul(&self.fac[k].dinv, &self.border[k]);
+            let t = mul(&self.fac[k].gm, &next);
             for i in 0..M {
                 for j in 0..M {
                     zk[i][j] -= t[i][j];
@@ -870,8 +840,8 @@ impl<'g> FixedSolver<'g> {
             self.border[k] = zk;
             next = zk;
         }
-        let t1 = mat_mulf(&self.a_last, &self.border[n - 2]);
-        let t2 = mat_mulf(&self.c_last, &self.border[0]);
+        let t1 = mul(&self.a_last, &self.border[n - 2]);
+        let t2 = mul(&self.c_last, &self.border[0]);
         let mut s = self.d_last;
         for i in 0..M {
             for j in 0..M {
@@ -904,7 +874,7 @@ impl<'g> FixedSolver<'g> {
         let n = self.g.n;
         let mut worst2 = 0.0_f64;
         if !self.g.closed {
-            let mut next = mat_vecf(&self.fac[n - 1].dinv, &z[n - 1]);
+            let mut next = apply(&self.fac[n - 1].dinv, &z[n - 1]);
             for a in 0..M {
                 x[n - 1][a] -= next[a];
             }
@@ -912,8 +882,8 @@ impl<'g> FixedSolver<'g> {
             raise_worst(&z[n - 1], self.scale2[n - 1], &mut worst2);
             for k in (0..n - 1).rev() {
                 let f = &self.fac[k];
-                let y = mat_vecf(&f.dinv, &z[k]);
-                let t = mat_vecf(&f.gm, &next);
+                let y = apply(&f.dinv, &z[k]);
+                let t = apply(&f.gm, &next);
                 let d: Vf = vf(|a| y[a] - t[a]);
                 for a in 0..M {
                     x[k][a] -= d[a];
@@ -925,24 +895,24 @@ impl<'g> FixedSolver<'g> {
             return worst2.sqrt();
         }
         let rows = n - 1;
-        let mut next = mat_vecf(&self.fac[rows - 1].dinv, &z[rows - 1]);
+        let mut next = apply(&self.fac[rows - 1].dinv, &z[rows - 1]);
         z[rows - 1] = next;
         for k in (0..rows - 1).rev() {
             let f = &self.fac[k];
-            let y = mat_vecf(&f.dinv, &z[k]);
-            let t = mat_vecf(&f.gm, &next);
+            let y = apply(&f.dinv, &z[k]);
+            let t = apply(&f.gm, &next);
             next = vf(|a| y[a] - t[a]);
             z[k] = next;
         }
         let mut rhs = z[n - 1];
-        let t1 = mat_vecf(&self.a_last, &z[n - 2]);
-        let t2 = mat_vecf(&self.c_last, &z[0]);
+        let t1 = apply(&self.a_last, &z[n - 2]);
+        let t2 = apply(&self.c_last, &z[0]);
         for a in 0..M {
             rhs[a] -= t1[a] + t2[a];
         }
-        let last = mat_vecf(&self.schur_inv, &rhs);
+        let last = apply(&self.schur_inv, &rhs);
         for k in 0..rows {
-            let t = mat_vecf(&self.border[k], &last);
+            let t = apply(&self.border[k], &last);
             let d: Vf = vf(|a| z[k][a] - t[a]);
             for a in 0..M {
                 x[k][a] -= d[a];
