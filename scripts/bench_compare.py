@@ -68,8 +68,8 @@ def rust():
 # "rates" interleave the two sides one run at a time, so that both sides' best is taken over the
 # same stretch of time (this machine's speed changes in episodes longer than a 1 000-key
 # construction: a spherekit best of 21 in a row came out at 275 µs or 410 µs, both often, with
-# nothing else running); "build, consecutive" times 21 runs in a row on each side, as the rounds
-# did up to stop 29.
+# nothing else running); "build, consecutive" times 21 runs in a row on each side (each side's
+# best is then taken over a different stretch of time; kept as a third line for comparison).
 PAIRED = [
     ("build", "build 1", 15, 21, 1),
     ("rates", "rates 1", 9, 3, 1),
@@ -283,7 +283,7 @@ def write(r, peers, build20, build1000, paired, up0, up1):
         "Paired rounds, `cubic` against `RotationSpline` on the same keys, so that both sides of a "
         "ratio see the same load. Interleaved: one scipy run, then one spherekit run (after an untimed "
         "one), 21 times a round for the construction and 3 for the evaluation, the best of each side "
-        "per round; consecutive (the protocol up to stop 29): scipy's best of 21 constructions, then "
+        "per round; consecutive: scipy's best of 21 constructions, then "
         "spherekit's best of 21:"
     )
     lines.append("")

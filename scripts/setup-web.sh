@@ -33,11 +33,6 @@ if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknow
   rustup target add wasm32-unknown-unknown
 fi
 
-if ! rustup component list --installed 2>/dev/null | grep -q '^rust-src'; then
-  echo "setup-web: adding the rust-src component (the web build compiles std)" >&2
-  rustup component add rust-src
-fi
-
 # The CLI must match the wasm-bindgen crate exactly.
 bindgen_version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/[^0-9.]/, ""); print; exit }' Cargo.lock)
 if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $bindgen_version"; then

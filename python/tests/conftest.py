@@ -27,3 +27,26 @@ def random_times(rng, n):
 @pytest.fixture
 def rng():
     return np.random.default_rng(20261201)
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """The `spherekit` CLI of this checkout (`cargo build --release -p spherekit-cli`, incremental
+    after the module's own build), to compare the module's output with. The suite runs where the
+    module is built, so cargo is there: its absence is a failure, not a skip."""
+    import json
+    import shutil
+    import subprocess
+
+    cargo = shutil.which("cargo")
+    assert cargo is not None, "cargo is not on PATH: no CLI to compare the module with"
+    build = subprocess.run(
+        [cargo, "build", "--release", "--locked", "--quiet", "-p", "spherekit-cli", "--bin", "spherekit",
+         "--message-format=json"],
+        cwd=REPO, capture_output=True, text=True, check=True,
+    )
+    for line in build.stdout.splitlines():
+        message = json.loads(line)
+        if message.get("reason") == "compiler-artifact" and message.get("executable"):
+            return message["executable"]
+    raise AssertionError("cargo built no spherekit executable")

@@ -32,10 +32,10 @@ fn is_s3(scene: &Map<String, Value>) -> bool {
         .is_some_and(|s| matches!(Space::parse(s), Ok(Space::S3)))
 }
 
-/// The scene's JSON text, in the quaternion order the caller means.
+/// The JSON text of a scene given as text or a file, in the quaternion order the caller means
+/// (a dict is read by [`parse`] as a value, in Python's order: scalar last unless it says
+/// `quaternion_order` or `scalar_first` is `True`, [`default_order`]).
 ///
-/// - A dict is a scene as Python objects, in Python's order: scalar last unless it says
-///   `quaternion_order` or `scalar_first` is `True` ([`default_order`]).
 /// - A `str` or `bytes` of JSON, or a path (`os.PathLike`) of a scene file, is the scene format
 ///   as the CLI reads it: scalar first unless it says `quaternion_order`. `scalar_first=False`
 ///   reads such a text scalar last when it does not say.
@@ -46,12 +46,6 @@ fn scene_text(scene: &Bound<'_, PyAny>, scalar_first: Option<bool>) -> PyResult<
         std::str::from_utf8(b.as_bytes())
             .map(str::to_owned)
             .map_err(|e| value_error(format!("the scene is not valid UTF-8 ({e})")))?
-    } else if scene.is_instance_of::<PyDict>() {
-        let mut value = to_json(scene, 0)?;
-        if let Value::Object(map) = &mut value {
-            default_order(map, scalar_first.unwrap_or(false));
-        }
-        return Ok(value.to_string());
     } else if let Ok(path) = scene.extract::<std::path::PathBuf>() {
         let display = path.display();
         std::fs::read_to_string(&path)
@@ -85,8 +79,18 @@ fn scalar_last_unless_said(text: String) -> String {
     format!("{head}\"quaternion_order\": \"xyzw\", {tail}")
 }
 
+/// Reads a scene: a dict as a JSON value (no text in between), text and files as the CLI does.
 fn parse(scene: &Bound<'_, PyAny>, scalar_first: Option<bool>) -> PyResult<Scene> {
-    Scene::from_json(&scene_text(scene, scalar_first)?).map_err(|e| value_error(e.to_string()))
+    let scene = if scene.is_instance_of::<PyDict>() {
+        let mut value = to_json(scene, 0)?;
+        if let Value::Object(map) = &mut value {
+            default_order(map, scalar_first.unwrap_or(false));
+        }
+        Scene::from_value(&value)
+    } else {
+        Scene::from_json(&scene_text(scene, scalar_first)?)
+    };
+    scene.map_err(|e| value_error(e.to_string()))
 }
 
 /// Samples a scene: the dict `spherekit sample` prints.

@@ -186,12 +186,9 @@ pub fn render_svg(scene: &Scene, size: u32) -> Result<String, RenderError> {
 
 /// The camera [`render_built`] draws `curves` of `scene` with (its default depends on the
 /// points), so that an interactive caller can project and pick what it shows.
-///
-/// # Errors
-///
-/// [`RenderError::Scene`] for a bad `view`.
-pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Result<Camera, RenderError> {
-    Ok(Camera::of(&scene.view()?, curves))
+#[must_use]
+pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Camera {
+    Camera::of(scene.view(), curves)
 }
 
 /// A scene's figure laid out at one size, everything of it that does not depend on the
@@ -236,7 +233,7 @@ impl Prepared {
         if !scene.space.drawable() {
             return Err(RenderError::Space(scene.space.name()));
         }
-        let view = scene.view()?;
+        let view = scene.view();
         let mut sketch = Sketch::default();
         let single = curves.len() == 1;
         let normalized = view.plot_time == PlotTime::Normalized;
@@ -248,7 +245,7 @@ impl Prepared {
             let polygon = !spec.method.interpolates;
             let sampled = match curve {
                 BuiltCurve::S2(b) => {
-                    draw_points(&mut sketch, b, color, polygon, &view, &|p: &S2Point| {
+                    draw_points(&mut sketch, b, color, polygon, view, &|p: &S2Point| {
                         p.as_dvec3()
                     });
                     sample(&*b.curve, size, normalized, &|j| {
@@ -258,13 +255,13 @@ impl Prepared {
                 }
                 BuiltCurve::Sn(b) => {
                     let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
-                    draw_points(&mut sketch, b, color, polygon, &view, &embed);
+                    draw_points(&mut sketch, b, color, polygon, view, &embed);
                     sample(&*b.curve, size, normalized, &|j| {
                         [j.velocity.length(), 0.0, 0.0, 0.0]
                     })
                 }
                 BuiltCurve::S3(b) => {
-                    draw_rotations(&mut sketch, b, color, single, &view);
+                    draw_rotations(&mut sketch, b, color, single, view);
                     // |ω| = 2|q′| (the half-angle factor); ω in the space frame.
                     sample(&*b.curve, size, normalized, &|j| {
                         let w =
@@ -391,15 +388,15 @@ impl<'a> Figure<'a> {
         scene: &Scene,
         curves: &[BuiltCurve],
     ) -> Result<Self, RenderError> {
-        let view = scene.view()?;
+        let view = scene.view();
         let size = prepared.size;
-        let axes = Camera::of(&view, curves).axes();
+        let axes = Camera::of(view, curves).axes();
         let canvas = prepared.sketch.project(size, axes);
         let scale = canvas.scale;
         let panels = &prepared.panels;
         let strip = strip_height(size);
         let legend = if view.legend {
-            legend_entries(scene, &view, &canvas, prepared.single, !panels.is_empty())
+            legend_entries(scene, view, &canvas, prepared.single, !panels.is_empty())
         } else {
             Vec::new()
         };
@@ -419,7 +416,7 @@ impl<'a> Figure<'a> {
             canvas,
             legend,
             legend_top,
-            title: view.title,
+            title: view.title.clone(),
         })
     }
 

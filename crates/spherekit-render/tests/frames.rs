@@ -122,13 +122,14 @@ fn view_axes_choose_the_traced_body_axes() {
         (r#","axes":["w"]"#, "view.axes: must be a list of body axes"),
         (r#","axes":"x""#, "view.axes: must be a list of body axes"),
     ] {
+        // The view is checked with the scene, before anything is drawn.
         let text = with_axes(axes);
-        let err = render(&scene(&text), 160).expect_err(axes).to_string();
+        let err = Scene::from_json(&text).expect_err(axes).to_string();
         assert!(err.contains(message), "{axes}: {err}");
     }
     let s2 =
         r#"{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"view":{"axes":["x"]}}"#;
-    let err = render(&scene(s2), 160).expect_err("S2").to_string();
+    let err = Scene::from_json(s2).expect_err("S2").to_string();
     assert!(
         err.contains("view.axes: body axes are drawn for S3 scenes only"),
         "{err}"

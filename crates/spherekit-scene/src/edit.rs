@@ -57,7 +57,7 @@ impl From<SceneError> for EditError {
 
 /// A scene as an editable JSON document, with the validated [`Scene`] and its built curves.
 ///
-/// Every edit changes a copy of the document and reads it back with [`Scene::from_json`] (so
+/// Every edit changes a copy of the document and reads it back with [`Scene::from_value`] (so
 /// it is checked exactly like a pasted scene), then rebuilds only the curves whose description
 /// changed; a failed edit leaves everything as it was.
 ///
@@ -77,6 +77,8 @@ pub struct Document {
     scene: Scene,
     curves: Vec<BuiltCurve>,
     builds: u32,
+    /// Counts the edits that change the figure's layout (everything but `view.camera`).
+    layout: u64,
 }
 
 impl Document {
@@ -89,9 +91,9 @@ impl Document {
         let doc = parse_doc(text)?;
         let scene = Scene::from_json(text)?;
         let curves = scene.build()?;
-        scene.view()?;
         Ok(Self {
             builds: u32::try_from(curves.len()).unwrap_or(u32::MAX),
+            layout: 0,
             doc,
             scene,
             curves,
@@ -124,6 +126,14 @@ impl Document {
     #[must_use]
     pub fn curves(&self) -> &[BuiltCurve] {
         &self.curves
+    }
+
+    /// A number that changes with every edit that changes what a figure of the scene lays out
+    /// (the curves, the view but its camera), and only then: an interactive caller keeps a
+    /// laid-out figure while it is the same (a turn of the camera keeps it).
+    #[must_use]
+    pub fn layout_generation(&self) -> u64 {
+        self.layout
     }
 
     /// How many curves have been built since the document was made (edits rebuild only what
@@ -409,12 +419,9 @@ impl Document {
 
     /// Validates an edited document and rebuilds the curves whose description changed.
     ///
-    /// A curve whose JSON is unchanged keeps its built curve and its parsed description (the
-    /// document goes back through text, and `serde_json`'s default parser does not always read
-    /// back the exact double it wrote, so re-parsing could move an untouched point by an ulp).
+    /// A curve whose JSON is unchanged keeps its built curve and its parsed description.
     fn apply(&mut self, doc: Map<String, Value>) -> Result<(), EditError> {
-        let text = Value::Object(doc.clone()).to_string();
-        let mut scene = Scene::from_json(&text)?;
+        let mut scene = Scene::from_value(&Value::Object(doc.clone()))?;
         // The scene-level fields that say how every curve's points are read: the sphere, and
         // on S³ the quaternion order (a curve's own `canonicalize` is one of its fields).
         let same_reading =
@@ -431,7 +438,6 @@ impl Document {
                 fresh.push(Some(build_one(&scene, i)?));
             }
         }
-        scene.view()?;
         let all: Vec<&BuiltCurve> = fresh
             .iter()
             .enumerate()
@@ -452,10 +458,22 @@ impl Document {
         self.builds = self
             .builds
             .saturating_add(u32::try_from(built).unwrap_or(u32::MAX));
+        if without_camera(&doc) != without_camera(&self.doc) {
+            self.layout += 1;
+        }
         self.scene = scene;
         self.doc = doc;
         Ok(())
     }
+}
+
+/// A document without its `view.camera` (what a figure's layout depends on).
+fn without_camera(doc: &Map<String, Value>) -> Map<String, Value> {
+    let mut doc = doc.clone();
+    if let Some(Value::Object(view)) = doc.get_mut("view") {
+        view.remove("camera");
+    }
+    doc
 }
 
 /// Whether an edit failed on a curve's `field` (`extrapolate`, or `curves[i].extrapolate`).

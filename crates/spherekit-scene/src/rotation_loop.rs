@@ -20,11 +20,6 @@ use crate::scene::{Input, Points};
 
 type BoxedCurve = Box<dyn Curve<Point = UnitQuat> + Send + Sync>;
 
-/// Whether closed, canonicalised keys make a loop that ends at `−q₀`.
-pub(crate) fn closes_at_antipode(keys: &[UnitQuat]) -> bool {
-    RotationLoop::<BoxedCurve>::closes_at_antipode(keys)
-}
-
 /// Builds the closed curve of `method` through `keys` (canonicalised, closing at `−q₀`) as a
 /// loop of rotations.
 ///

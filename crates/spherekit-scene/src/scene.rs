@@ -133,8 +133,8 @@ pub struct Scene {
     pub curves: Vec<CurveSpec>,
     /// Where to sample.
     pub sampling: Sampling,
-    /// Rendering options, passed through to the renderer.
-    pub view: Option<Value>,
+    /// Rendering options (`view`), read and checked with the scene.
+    pub view: View,
     /// S³: whether the scene writes quaternions scalar last, `[x, y, z, w]` (scipy's order),
     /// in its points and in the sample output. [`CurveSpec::points`] are always `[w, x, y, z]`.
     pub scalar_last: bool,
@@ -299,7 +299,7 @@ impl CurveSpec {
                 if self.canonicalize {
                     unflip(&mut keys);
                     // A loop of an odd number of full turns: closed in SO(3), at −q₀.
-                    if self.closed && rotation_loop::closes_at_antipode(&keys) {
+                    if self.closed && spherekit::closes_at_antipode(&keys) {
                         let built = rotation_loop::build(
                             self.method,
                             keys,
@@ -371,6 +371,24 @@ impl Scene {
     pub fn from_json(text: &str) -> Result<Self, SceneError> {
         let raw: RawScene =
             serde_json::from_str(text).map_err(|e| SceneError::Json(json_error(text, &e)))?;
+        Self::from_raw(raw)
+    }
+
+    /// [`from_json`](Self::from_json) of a JSON value already parsed (a front end's object,
+    /// an edited document), without writing it as text.
+    ///
+    /// # Errors
+    ///
+    /// As [`from_json`](Self::from_json), with the same messages: a value that is not a scene
+    /// is written as text once, for the JSON path of what is wrong.
+    pub fn from_value(value: &Value) -> Result<Self, SceneError> {
+        match RawScene::deserialize(value) {
+            Ok(raw) => Self::from_raw(raw),
+            Err(_) => Self::from_json(&value.to_string()),
+        }
+    }
+
+    fn from_raw(raw: RawScene) -> Result<Self, SceneError> {
         let space = Space::parse(&raw.space)?;
         let scalar_last = match raw.quaternion_order.as_deref() {
             None | Some("wxyz") => false,
@@ -470,11 +488,12 @@ impl Scene {
                 }
             }
         }
+        let view = View::from_json(raw.view.as_ref(), space, curves.len())?;
         Ok(Self {
             space,
             curves,
             sampling,
-            view: raw.view,
+            view,
             scalar_last,
             listed,
         })
@@ -486,13 +505,10 @@ impl Scene {
         self.listed
     }
 
-    /// The scene's `view` options, checked.
-    ///
-    /// # Errors
-    ///
-    /// A [`SceneError::Field`] naming the bad `view` field.
-    pub fn view(&self) -> Result<View, SceneError> {
-        View::from_json(self.view.as_ref(), self.space, self.curves.len())
+    /// The scene's `view` options (checked when the scene was read).
+    #[must_use]
+    pub fn view(&self) -> &View {
+        &self.view
     }
 
     /// Replaces the sampling by `n` uniform samples.

@@ -14,8 +14,7 @@
 //!   curves an edit touched (a camera change only re-renders), and draws into a canvas.
 //!
 //! Every bad input gives a `JsError` whose message is the line the CLI prints after
-//! `error: `; a panic hook reports anything unexpected to the console (except in the release
-//! build of `just web`, which aborts on a panic at once: [`start`]).
+//! `error: `; a panic hook reports anything unexpected to the console ([`start`]).
 //!
 //! Coordinates follow the scene format: S² points `[x, y, z]`, S³ keys `[w, x, y, z]`. Screen
 //! positions are pixels of an image `size` pixels wide, as [`spherekit_render::render`] draws it.
@@ -25,7 +24,7 @@ use core::fmt;
 use serde_json::{Value, json};
 use spherekit::glam::DVec3;
 use spherekit::{
-    Ambient, Jet, SolveError, UnitQuat, angular_velocity_acceleration,
+    Ambient, Jet, PointError, SolveError, UnitQuat, angular_velocity_acceleration,
     angular_velocity_acceleration_body,
 };
 use spherekit_render::{
@@ -69,14 +68,11 @@ impl fmt::Display for InputError {
 
 impl core::error::Error for InputError {}
 
-/// Installs the panic hook that reports a panic to the browser console (called on load).
-///
-/// Not in a build with `-C panic=immediate-abort` (`just web`'s): there a panic aborts at once
-/// (the console shows wasm's `unreachable`), no hook ever runs, and the hook's code would only
-/// take room in the .wasm.
+/// Installs the panic hook that reports a panic to the browser console (called on load): the
+/// message and its location go to `console.error`, then the module aborts (`panic = "abort"`;
+/// the browser reports wasm's `unreachable`).
 #[wasm_bindgen(start)]
 pub fn start() {
-    #[cfg(not(panic = "immediate-abort"))]
     console_error_panic_hook::set_once();
 }
 
@@ -143,8 +139,13 @@ pub fn key_to_axis_angle(key: &[f64]) -> Result<Vec<f64>, JsError> {
 /// An [`InputError`] for a zero or non-finite axis or angle.
 #[wasm_bindgen]
 pub fn axis_angle_to_key(degrees: f64, x: f64, y: f64, z: f64) -> Result<Vec<f64>, JsError> {
-    let q = UnitQuat::from_axis_angle(DVec3::new(x, y, z), degrees.to_radians())
-        .map_err(|e| InputError::Coords(format!("axis {}", e.predicate())))?;
+    let q =
+        UnitQuat::from_axis_angle(DVec3::new(x, y, z), degrees.to_radians()).map_err(
+            |e| match e {
+                PointError::NonFiniteAngle => InputError::Coords(format!("angle: {e}")),
+                e => InputError::Coords(format!("axis {}", e.predicate())),
+            },
+        )?;
     Ok(q.to_wxyz().to_vec())
 }
 
@@ -162,8 +163,7 @@ fn load(scene: &str) -> Result<(Scene, Vec<BuiltCurve>), SceneError> {
 /// The CLI's message for a bad scene or view.
 #[wasm_bindgen]
 pub fn validate(scene: &str) -> Result<(), JsError> {
-    let (scene, _) = load(scene).map_err(js)?;
-    scene.view().map_err(js)?;
+    load(scene).map_err(js)?;
     Ok(())
 }
 
@@ -302,15 +302,6 @@ fn straight_rgba(pixmap: Pixmap) -> Vec<u8> {
     pixmap.take()
 }
 
-/// What a laid-out figure depends on: the scene text without `view.camera`, and the size.
-fn layout_key(scene: &str, size: u32) -> String {
-    let mut v: Value = serde_json::from_str(scene).unwrap_or(Value::Null);
-    if let Some(view) = v.get_mut("view").and_then(Value::as_object_mut) {
-        view.remove("camera");
-    }
-    format!("{size} {v}")
-}
-
 /// The page's handle on one scene: the edited [`Document`] and the last rendered frame.
 ///
 /// Edits go through [`Document`] (checked exactly like a pasted scene, rebuilding only the
@@ -325,9 +316,9 @@ pub struct Playground {
     rgba: Vec<u8>,
     /// Where the last rendered frame's plots put their axes.
     plots: Vec<PlotAxes>,
-    /// The last figure laid out, with its key (the scene without its camera, and the size):
-    /// turning the view renders it again without flattening or sampling.
-    prepared: Option<(String, Prepared)>,
+    /// The last figure laid out, with its key (the document's layout generation and the
+    /// size): turning the view renders it again without flattening or sampling.
+    prepared: Option<((u64, u32), Prepared)>,
     /// What the last failed edit's solver reported (see [`Playground::failure`]).
     failure: Option<SolveFailure>,
 }
@@ -585,10 +576,7 @@ impl Playground {
     /// toggles show these).
     #[must_use]
     pub fn view_options(&self) -> String {
-        // The scene's view was checked when it was set.
-        let Ok(view) = self.doc.scene().view() else {
-            return Value::Null.to_string();
-        };
+        let view = self.doc.scene().view();
         let plot = match view.plot {
             Plot::Speed => "speed",
             Plot::Omega => "omega",
@@ -636,14 +624,7 @@ impl Playground {
     ///
     /// Does not fail for a scene that was drawn.
     pub fn pin_camera(&mut self) -> Result<(), JsError> {
-        if self
-            .doc
-            .scene()
-            .view
-            .as_ref()
-            .and_then(|v| v.get("camera"))
-            .is_some()
-        {
+        if self.doc.scene().view().camera.is_some() {
             return Ok(());
         }
         self.set_view("camera", &json!(self.camera()).to_string())
@@ -906,7 +887,8 @@ impl Playground {
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
         let (scene, curves) = (self.doc.scene(), self.doc.curves());
-        let key = layout_key(&self.doc.to_json(), size);
+        // The layout is kept while the document's layout generation and the size are the same.
+        let key = (self.doc.layout_generation(), size);
         let prepared = match self.prepared.take() {
             Some((k, p)) if k == key => p,
             _ => prepare(scene, curves, size).map_err(js)?,
@@ -965,10 +947,7 @@ impl Playground {
     }
 
     fn normalized(&self) -> bool {
-        self.doc
-            .scene()
-            .view()
-            .is_ok_and(|v| v.plot_time == PlotTime::Normalized)
+        self.doc.scene().view().plot_time == PlotTime::Normalized
     }
 
     /// Curve `curve` and its parameter at `time` on the scene's time axis, clamped to its
@@ -990,10 +969,7 @@ impl Playground {
     }
 
     fn cam(&self) -> Camera {
-        // The scene's view was checked when it was set.
-        camera_of(self.doc.scene(), self.doc.curves()).unwrap_or(Camera {
-            orientation: UnitQuat::IDENTITY,
-        })
+        camera_of(self.doc.scene(), self.doc.curves())
     }
 
     /// Sphere coordinates of a point of ℝ³ in the scene's space (S¹ drops z).

@@ -279,9 +279,9 @@ pub struct SolveInfo {
 ///
 /// Both give the same auxiliary vertices (Example 1: d₁ = (−0.7517, −0.1143, 0.6496),
 /// d₂ = (0.2070, 0.8090, 0.5501)). Newton stops as soon as the residual is below a quarter of
-/// `residual_tolerance`, hence 1e-13 rather than 1e-16 in Example 2. On random S² data with
-/// n = 1000 and neighbours 10°–60° apart, Newton takes 5 iterations and about 4 ms in a release
-/// build, Jacobi about 105 iterations and 35 ms (`examples/beta_timing.rs`); both are linear in n.
+/// `residual_tolerance`, hence 1e-13 rather than 1e-16 in Example 2. Both solvers take time
+/// linear in n; their iterations and timings on random S² data are in `BENCHMARKS.md` (the
+/// `solve` bench; `examples/beta_timing.rs`).
 ///
 /// # Closed loops
 ///

@@ -137,7 +137,8 @@ impl Knots {
 
     /// [`locate`](Self::locate) starting the search at piece `hint`: the same result, bit for
     /// bit, found by stepping forward from `hint` (cheap when parameters arrive in increasing
-    /// order) and by binary search otherwise. Returns the piece, which is the hint to pass
+    /// order, a piece or two at a time) and by binary search otherwise (a parameter before the
+    /// hint's piece or more than two pieces after it). Returns the piece, which is the hint to pass
     /// with the next (larger) parameter.
     #[must_use]
     pub fn locate_from(&self, t: f64, side: Side, hint: usize) -> (usize, f64) {
@@ -153,8 +154,16 @@ impl Knots {
         if i > 0 && !before(k[i]) {
             return self.locate(t, side);
         }
-        while i < last && before(k[i + 1]) {
-            i += 1;
+        // A step or two forward (increasing parameters); a longer jump searches.
+        for _ in 0..2 {
+            if i < last && before(k[i + 1]) {
+                i += 1;
+            } else {
+                return self.local(i, t);
+            }
+        }
+        if i < last && before(k[i + 1]) {
+            return self.locate(t, side);
         }
         self.local(i, t)
     }

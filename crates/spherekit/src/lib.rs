@@ -170,7 +170,7 @@ pub use rotation::{
     ROTATION_TOLERANCE, RotationError, exp_so3, rodrigues_compose, rotation_derivative,
     rotation_matrix_from_rodrigues, skew,
 };
-pub use rotation_loop::RotationLoop;
+pub use rotation_loop::{RotationLoop, closes_at_antipode};
 pub use s2::S2Point;
 pub use s3::{
     UnitQuat, angular_velocity_acceleration, angular_velocity_acceleration_body, unflip,

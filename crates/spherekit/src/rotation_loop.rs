@@ -38,10 +38,23 @@
 use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::s3::UnitQuat;
 
+/// Whether keys read as a closed loop end on the far side of the first, `q_{n−1}·q₀ < 0`: for
+/// keys with the shortest steps between neighbours (after [`unflip`](crate::unflip)), a loop of
+/// an odd number of full turns, which [`RotationLoop`] closes at `−q₀`.
+#[must_use]
+pub fn closes_at_antipode(keys: &[UnitQuat]) -> bool {
+    match (keys.first(), keys.last()) {
+        (Some(first), Some(last)) if keys.len() >= 2 => first.as_dquat().dot(last.as_dquat()) < 0.0,
+        _ => false,
+    }
+}
+
 /// A closed curve through keys of rotations that is closed in SO(3): when the keys end on the
 /// far side of the first (`q_{n−1}·q₀ < 0`, a loop of an odd number of full turns) it ends at
 /// `−q₀` and repeats antiperiodically; otherwise it is the ordinary closed curve, unchanged.
-/// See the [module documentation](self) for the rule and why it holds for every construction.
+/// The rule, and why it holds for every construction: `docs/derivations.md`, "Closed loops"
+/// (in short, the loop is the first half of the closed construction through the keys followed by
+/// their antipodes, which every construction maps to an antiperiodic curve).
 ///
 /// # Examples
 ///
@@ -49,7 +62,8 @@ use crate::s3::UnitQuat;
 ///
 /// ```
 /// use spherekit::{
-///     continuity, CubicEnd, CubicSpline, Curve, RotationLoop, UnitQuat, unflip,
+///     closes_at_antipode, continuity, CubicEnd, CubicSpline, Curve, RotationLoop, UnitQuat,
+///     unflip,
 /// };
 /// use spherekit::glam::DVec3;
 ///
@@ -57,7 +71,7 @@ use crate::s3::UnitQuat;
 ///     .map(|k| UnitQuat::from_axis_angle(DVec3::Z, f64::from(k) * std::f64::consts::FRAC_PI_4).unwrap())
 ///     .collect();
 /// unflip(&mut keys);
-/// assert!(RotationLoop::closes_at_antipode(&keys));
+/// assert!(closes_at_antipode(&keys));
 /// let times: Vec<f64> = (0..=8).map(f64::from).collect();
 /// let orbit = RotationLoop::try_new(keys, Some(times), |keys, knots| {
 ///     CubicSpline::try_new(keys, knots, CubicEnd::Natural, true)
@@ -86,23 +100,10 @@ pub struct RotationLoop<C> {
 }
 
 impl<C: Curve<Point = UnitQuat>> RotationLoop<C> {
-    /// Whether keys read as a closed loop end on the far side of the first,
-    /// `q_{n−1}·q₀ < 0`: for keys with the shortest steps between neighbours (after
-    /// [`unflip`](crate::unflip)), a loop of an odd number of full turns.
-    #[must_use]
-    pub fn closes_at_antipode(keys: &[UnitQuat]) -> bool {
-        match (keys.first(), keys.last()) {
-            (Some(first), Some(last)) if keys.len() >= 2 => {
-                first.as_dquat().dot(last.as_dquat()) < 0.0
-            }
-            _ => false,
-        }
-    }
-
     /// Builds the closed loop through `keys` with `build`, a closed constructor such as
     /// `|keys, knots| CubicSpline::try_new(keys, knots, CubicEnd::Natural, true)`.
     ///
-    /// When the keys [close at the antipode](Self::closes_at_antipode), `build` is called once
+    /// When the keys [close at the antipode](closes_at_antipode), `build` is called once
     /// with the `2n` keys `q₀ … q_{n−1}, −q₀ … −q_{n−1}` and, when `knots` are given (`n + 1`
     /// of them), the knots continued by one period, `t_{n+k} = t_n + (t_k − t₀)`; a
     /// construction with per-joint parameters takes each list twice. Otherwise `build` is
@@ -122,7 +123,7 @@ impl<C: Curve<Point = UnitQuat>> RotationLoop<C> {
     ) -> Result<Self, E> {
         let n = keys.len();
         let knots_fit = knots.as_ref().is_none_or(|k| k.len() == n + 1);
-        if !Self::closes_at_antipode(&keys) || !knots_fit {
+        if !closes_at_antipode(&keys) || !knots_fit {
             return build(keys, knots).map(Self::periodic);
         }
         let doubled_keys: Vec<UnitQuat> = keys

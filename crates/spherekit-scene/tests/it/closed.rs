@@ -229,3 +229,39 @@ fn a_full_turn_loops_bad_lists_name_the_keys_given() {
         .unwrap_err();
     assert!(e.to_string().contains('5'), "{e}");
 }
+
+/// Random closed loops of six rotations: about half turn by an odd number of full turns; every
+/// one is built (none refused), closed in SO(3).
+#[test]
+fn random_closed_loops_of_rotations_are_all_built() {
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut uniform = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut antiperiodic = 0;
+    for _ in 0..40 {
+        let keys: Vec<Vec<f64>> = (0..6)
+            .map(|_| (0..4).map(|_| 2.0 * uniform() - 1.0).collect())
+            .collect();
+        for method in ["cubic", "squad", "catmull-rom", "geodesic"] {
+            let scene = json!({ "space": "S3", "method": method, "closed": true, "points": keys });
+            let b = built_s3(&scene);
+            let c = &b.curve;
+            let [t0, t1] = c.domain();
+            assert!(
+                c.eval(t1)
+                    .dist(&c.eval(t0))
+                    .min(c.eval(t1).dist(&-c.eval(t0)))
+                    <= 1e-12
+            );
+            antiperiodic += usize::from(c.is_antiperiodic() && method == "cubic");
+        }
+    }
+    assert!(
+        (10..=30).contains(&antiperiodic),
+        "{antiperiodic} of 40 loops turn an odd number of times"
+    );
+}

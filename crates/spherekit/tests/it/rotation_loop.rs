@@ -20,7 +20,8 @@ use spherekit::glam::DVec3;
 use spherekit::{
     ArcBlend, BetaParams, BetaSpline, BsplineKim, CatmullRom, CatmullRomNlerp, CornerBlendS3,
     CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GammaSpline, Gammas, GeodesicSpline,
-    Manifold, NlerpSpline, RotationLoop, Side, SplineError, Squad, UnitQuat, continuity, unflip,
+    Manifold, NlerpSpline, RotationLoop, Side, SplineError, Squad, UnitQuat, closes_at_antipode,
+    continuity, unflip,
 };
 
 use crate::support::{Rng, check_derivatives};
@@ -165,7 +166,7 @@ fn check_rotation_loop(
     knots: Option<&[f64]>,
     smooth: Smooth,
 ) {
-    let odd = RotationLoop::<Box<dyn Curve<Point = UnitQuat>>>::closes_at_antipode(keys);
+    let odd = closes_at_antipode(keys);
     assert!(c.is_closed(), "{name}: closed");
     assert_eq!(
         c.is_antiperiodic(),
@@ -375,7 +376,7 @@ fn even_turn_loops_are_the_closed_curve_itself() {
 fn batch_evaluation_matches_single_calls_up_to_the_end() {
     let mut rng = Rng::new(38);
     let keys = orbit(5, 1.0, 0.1, &mut rng);
-    let c = RotationLoop::try_new(keys, None, |k, t| Squad::try_new_closed(k, t)).unwrap();
+    let c = RotationLoop::try_new(keys, None, Squad::try_new_closed).unwrap();
     for ts in [
         (0..50)
             .map(|k| 5.0 * f64::from(k) / 50.0)
