@@ -72,7 +72,7 @@ def load_registry(path):
         registry = json.load(f)
     REGISTRY.extend(registry)
     for m in registry:
-        METHODS[m["id"]] = ["S3"] if m["spaces"] == "S3" else ALL_SPACES
+        METHODS[m["id"]] = ["S3"] if m["spaces"] == ["S3"] else ALL_SPACES
         knots = m["knots"]
         if isinstance(knots, dict):
             TAKES_KNOTS.add(m["id"])

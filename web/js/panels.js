@@ -231,7 +231,7 @@ function methodSelect(space, value, id) {
     opt.value = m.id;
     opt.textContent = m.id;
     opt.disabled = !inSpaces(m.spaces, space);
-    opt.title = `${m.summary} — ${m.spaces}`;
+    opt.title = `${m.summary} — ${m.spaces.join(', ')}`;
     select.append(opt);
   }
   if (value) select.value = value;

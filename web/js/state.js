@@ -156,10 +156,9 @@ function approximate(curve, edit, anchor) {
   hooks.changed();
 }
 
-/** Whether a registry `spaces` string ("S2, S3, S<m>" or "S3") includes the scene's space. */
+/** Whether a registry `spaces` list (["S2", "S3", "S<m>"] or ["S3"]) includes the scene's space. */
 export function inSpaces(spaces, space) {
-  const list = spaces.split(', ');
-  return list.includes(space) || (list.includes('S<m>') && space !== 'S2' && space !== 'S3');
+  return spaces.includes(space) || (spaces.includes('S<m>') && space !== 'S2' && space !== 'S3');
 }
 
 /** The registry entry of a method id (undefined for an unknown one). */

@@ -87,22 +87,81 @@ impl PerJoint {
 }
 
 impl Param {
-    /// A number parameter with an offered range, for one value only.
+    /// A parameter of `kind`, for one value only, on every sphere.
+    const fn of_kind(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+        kind: ParamKind,
+    ) -> Self {
+        Self {
+            name,
+            label,
+            summary,
+            kind,
+            per_joint: None,
+            spheres: Spheres::All,
+            advanced: false,
+        }
+    }
+
+    /// A number with an offered range `[default, min, max]`.
     pub(crate) const fn number(
         name: &'static str,
         label: &'static str,
         summary: &'static str,
         [default, min, max]: [f64; 3],
     ) -> Self {
-        Self {
+        Self::of_kind(
             name,
             label,
             summary,
-            kind: ParamKind::Number { default, min, max },
-            per_joint: None,
-            spheres: Spheres::All,
-            advanced: false,
-        }
+            ParamKind::Number { default, min, max },
+        )
+    }
+
+    /// A whole number `[default, min, max]` (a default below `min`: the construction's own).
+    pub(crate) const fn integer(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+        [default, min, max]: [u64; 3],
+    ) -> Self {
+        Self::of_kind(
+            name,
+            label,
+            summary,
+            ParamKind::Integer { default, min, max },
+        )
+    }
+
+    /// `true` or `false`.
+    pub(crate) const fn boolean(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+        default: bool,
+    ) -> Self {
+        Self::of_kind(name, label, summary, ParamKind::Bool { default })
+    }
+
+    /// One of `choices`, the first the default.
+    pub(crate) const fn choice(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+        choices: &'static [&'static str],
+    ) -> Self {
+        Self::of_kind(name, label, summary, ParamKind::Choice(choices))
+    }
+
+    /// A vector of finite numbers, absent by default.
+    pub(crate) const fn vector(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+    ) -> Self {
+        Self::of_kind(name, label, summary, ParamKind::Vector)
     }
 
     /// Accepts a per-joint list too.
@@ -126,11 +185,6 @@ impl Param {
     /// A solver setting.
     pub(crate) const fn advanced(mut self) -> Self {
         self.advanced = true;
-        self
-    }
-
-    pub(crate) const fn with_kind(mut self, kind: ParamKind) -> Self {
-        self.kind = kind;
         self
     }
 
@@ -158,7 +212,7 @@ impl Param {
             "label": self.label,
             "summary": self.summary,
             "type": kind,
-            "spaces": self.spheres.describe(),
+            "spaces": self.spheres.names(),
             "advanced": self.advanced,
         });
         if let (Value::Object(o), Value::Object(e)) = (&mut out, extra) {

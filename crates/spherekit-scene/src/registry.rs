@@ -97,6 +97,16 @@ pub enum Spheres {
 }
 
 impl Spheres {
+    /// The spheres by name, as the registry JSON lists them (`"S<m>"`: every other S^m).
+    #[must_use]
+    pub fn names(self) -> &'static [&'static str] {
+        match self {
+            Self::All => &["S2", "S3", "S<m>"],
+            Self::S3 => &["S3"],
+            Self::S2 => &["S2"],
+        }
+    }
+
     /// A human-readable list of the spheres.
     #[must_use]
     pub fn describe(self) -> &'static str {
@@ -184,7 +194,7 @@ impl Method {
             "summary": self.summary,
             "continuity": self.continuity,
             "source": self.source,
-            "spaces": self.spheres.describe(),
+            "spaces": self.spheres.names(),
             "knots": match self.knots {
                 KnotRule::PerPoint { skip } => json!({ "skip": skip }),
                 KnotRule::Computed => json!("computed"),

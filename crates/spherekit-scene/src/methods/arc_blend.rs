@@ -8,22 +8,17 @@ use spherekit::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
-use crate::params::{Param, ParamKind};
+use crate::params::Param;
 use crate::registry::{KnotRule, Method, Spheres};
 use crate::scene::Input;
 
 /// The continuity order `n` of Pobegailo's blends.
-pub(crate) const ORDER: Param = Param::number(
+pub(crate) const ORDER: Param = Param::integer(
     "order",
     "order n",
     "the continuity order n: the curve is Cⁿ at every joint",
-    [0.0; 3],
-)
-.with_kind(ParamKind::Integer {
-    default: 2,
-    min: 1,
-    max: MAX_BLEND_ORDER as u64,
-});
+    [2, 1, MAX_BLEND_ORDER as u64],
+);
 
 pub(crate) static METHOD: Method = Method {
     id: "arc-blend",
@@ -39,13 +34,12 @@ pub(crate) static METHOD: Method = Method {
     closes: true,
     params: &[
         ORDER,
-        Param::number(
+        Param::choice(
             "timing",
             "timing",
             "the parameter: the book's knots while representable, else arc length (auto); the book's knots or an error (closed: only where they close the loop); the mean arc lengths; uniform. Every timing traces the same curve, Cⁿ in t",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Choice(&["auto", "book", "arc-length", "uniform"])),
+            &["auto", "book", "arc-length", "uniform"],
+        ),
     ],
     build,
 };

@@ -8,7 +8,7 @@ use spherekit::{BetaParams, BetaSolver, BetaSpline, ShapeParam};
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
-use crate::params::{NumberOrList, Param, ParamKind, Params};
+use crate::params::{NumberOrList, Param, Params};
 use crate::registry::{KnotRule, Method, Spheres};
 use crate::scene::Input;
 
@@ -39,20 +39,18 @@ pub(crate) static METHOD: Method = Method {
             [0.0, 0.0, 20.0],
         )
         .per_joint(0, 0),
-        Param::number(
+        Param::boolean(
             "interpolate",
             "interpolate",
             "solve for the control vertices so that the curve passes through the points",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Bool { default: true }),
-        Param::number(
+            true,
+        ),
+        Param::choice(
             "solver",
             "solver",
             "the interpolation solver: Newton's method or the paper's Jacobi-style iteration",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Choice(&["newton", "jacobi"])),
+            &["newton", "jacobi"],
+        ),
         Param::number(
             "tolerance",
             "tolerance",
@@ -67,17 +65,12 @@ pub(crate) static METHOD: Method = Method {
             [f64::NAN, 0.0, 0.0],
         )
         .advanced(),
-        Param::number(
+        Param::integer(
             "max_iterations",
             "max iterations",
             "the solver's iteration limit (absent: the solver's own)",
-            [0.0; 3],
+            [0, 1, 1_000_000],
         )
-        .with_kind(ParamKind::Integer {
-            default: 0,
-            min: 1,
-            max: 1_000_000,
-        })
         .advanced(),
     ],
     build,

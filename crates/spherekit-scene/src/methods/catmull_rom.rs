@@ -7,7 +7,7 @@ use spherekit::CatmullRom;
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
-use crate::params::{Param, ParamKind};
+use crate::params::Param;
 use crate::registry::{KnotRule, Method, Spheres};
 use crate::scene::{Input, Points};
 
@@ -23,13 +23,12 @@ pub(crate) static METHOD: Method = Method {
     interpolates: false,
     single_piece: false,
     closes: true,
-    params: &[Param::number(
+    params: &[Param::choice(
         "tangent",
         "tangent",
         "S3: the textbook's quaternion-difference tangents or intrinsic (log map) ones",
-        [0.0; 3],
+        &["quaternion", "intrinsic"],
     )
-    .with_kind(ParamKind::Choice(&["quaternion", "intrinsic"]))
     .s3_only()],
     build,
 };

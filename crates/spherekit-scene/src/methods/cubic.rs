@@ -9,7 +9,7 @@ use spherekit::{Ambient, CubicEnd, CubicSpline, SplineError, UnitQuat};
 
 use crate::built::{Built, BuiltCurve, ScenePoint, on_every_sphere};
 use crate::error::{SceneError, field_error};
-use crate::params::{Param, ParamKind};
+use crate::params::Param;
 use crate::registry::{KnotRule, Method, Spheres};
 use crate::scene::{Input, Points};
 
@@ -26,34 +26,28 @@ pub(crate) static METHOD: Method = Method {
     single_piece: false,
     closes: true,
     params: &[
-        Param::number(
+        Param::choice(
             "end",
             "end",
             "end condition: natural (zero angular acceleration), clamped (given end velocities) or scipy's (mean rates of the end segments)",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Choice(&["natural", "clamped", "scipy"])),
-        Param::number(
+            &["natural", "clamped", "scipy"],
+        ),
+        Param::vector(
             "start_velocity",
             "start velocity",
             "with end \"clamped\": S3 the angular velocity [x, y, z] at the first key (in params.frame), elsewhere a tangent vector there",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Vector),
-        Param::number(
+        ),
+        Param::vector(
             "end_velocity",
             "end velocity",
             "with end \"clamped\": the same at the last key",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Vector),
-        Param::number(
+        ),
+        Param::choice(
             "frame",
             "frame",
             "S3: the frame of the clamped angular velocities, space (ω = 2q′q̄) or body (2q̄q′, scipy's)",
-            [0.0; 3],
+            &["space", "body"],
         )
-        .with_kind(ParamKind::Choice(&["space", "body"]))
         .s3_only(),
     ],
     build,

@@ -8,7 +8,7 @@ use spherekit::{GammaSpline, Gammas, LastEdge};
 
 use crate::built::{Built, BuiltCurve};
 use crate::error::SceneError;
-use crate::params::{NumberOrList, Param, ParamKind};
+use crate::params::{NumberOrList, Param};
 use crate::registry::{KnotRule, Method, Spheres};
 use crate::scene::Input;
 
@@ -32,13 +32,12 @@ pub(crate) static METHOD: Method = Method {
             [1.0, 0.05, 4.0],
         )
         .per_joint(2, 1),
-        Param::number(
+        Param::choice(
             "last_edge",
             "last edge",
             "the last control edge by the paper's formula, or as its worked example computes it",
-            [0.0; 3],
-        )
-        .with_kind(ParamKind::Choice(&["formula", "paper-example"])),
+            &["formula", "paper-example"],
+        ),
     ],
     build,
 };
