@@ -80,4 +80,4 @@ pub use scene::{
 };
 pub use space::{MAX_DIMENSION, Space};
 pub use timing::{EXTRAPOLATIONS, PARAMETRIZATIONS, Parametrization, extrapolate_name};
-pub use view::{DEFAULT_ACCURACY, MAX_FRAMES, MAX_TITLE_CHARS, Plot, PlotTime, View};
+pub use view::{DEFAULT_FLATTENING_ACCURACY, MAX_FRAMES, MAX_TITLE_CHARS, Plot, PlotTime, View};

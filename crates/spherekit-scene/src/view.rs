@@ -76,7 +76,7 @@ pub struct View {
 }
 
 /// The default flattening accuracy in radians: a quarter of a pixel at 1 000 px.
-pub const DEFAULT_ACCURACY: f64 = 1e-3;
+pub const DEFAULT_FLATTENING_ACCURACY: f64 = 1e-3;
 
 /// The most triads `view.frames` may ask for.
 pub const MAX_FRAMES: usize = 200;
@@ -250,7 +250,7 @@ impl View {
             }
         };
         let accuracy = match map.get("accuracy") {
-            None => DEFAULT_ACCURACY,
+            None => DEFAULT_FLATTENING_ACCURACY,
             Some(v) => v
                 .as_f64()
                 .filter(|a| (1e-6..=0.1).contains(a))

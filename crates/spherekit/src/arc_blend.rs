@@ -143,7 +143,7 @@ pub(crate) fn check_loop_neighbours<P: Manifold>(
 /// | `Knots` | given | warped |
 /// | `Auto` | `Book` while well-conditioned, else `ArcLength`, else `Uniform` | |
 ///
-/// **Closed loops** ([`ArcBlend::try_new_closed_with`]) have one knot more than points, the last
+/// **Closed loops** ([`ArcBlend::try_with_closed`]) have one knot more than points, the last
 /// the time of the return to `p₀`, and every timing is solved around the loop rather than
 /// propagated from the first key: at every key, the seam included, the warp of the module docs
 /// makes the two neighbouring segments meet to order `n` for the given spacings. `ArcLength`,
@@ -178,7 +178,7 @@ pub(crate) fn check_loop_neighbours<P: Manifold>(
 /// let points = vec![p(1.0, 0.0, 0.3), p(0.6, 0.8, 0.4), p(-0.2, 1.0, 0.1), p(-0.9, 0.3, -0.2)];
 /// let book = ArcBlend::try_new(points.clone(), 2).unwrap();
 /// assert_eq!(book.timing(), ArcBlendTiming::Book); // short data: the book's knots
-/// let uniform = ArcBlend::try_new_with(points.clone(), 2, ArcBlendTiming::Uniform).unwrap();
+/// let uniform = ArcBlend::try_with(points.clone(), 2, ArcBlendTiming::Uniform).unwrap();
 /// assert_eq!(uniform.knots(), [0.0, 1.0, 2.0, 3.0]);
 /// // The same curve: the midpoint of segment 1 in its local parameter is passed by both.
 /// let on_book = (0..=1000).map(|j| {
@@ -367,7 +367,7 @@ fn timing_knots(timing: &'static str, widths: &[f64]) -> Result<Knots, SplineErr
 /// be represented in `f64` beyond a few thousand random keys. [`try_new`](Self::try_new) uses
 /// them while they are well-conditioned and otherwise arc-length knots (or uniform ones) with a
 /// Cⁿ time warp per segment: the same curve, Cⁿ in `t`, for any number of keys, built in linear
-/// time. [`try_new_with`](Self::try_new_with) chooses; see [`ArcBlendTiming`] and the module
+/// time. [`try_with`](Self::try_with) chooses; see [`ArcBlendTiming`] and the module
 /// docs (*Timing*) for the derivation and what is Cⁿ in which parameter.
 ///
 /// Properties: interpolation `r(t_i) = p_i`; points on one circle (in order) give back that
@@ -447,7 +447,7 @@ impl<P: Manifold> ArcBlend<P> {
     /// - [`SplineError::Antipodal`] for antipodal consecutive points;
     /// - [`SplineError::NoCircle`] when `p_j = p_{j+2}` (no unique circle through the triple).
     pub fn try_new(points: Vec<P>, order: usize) -> Result<Self, SplineError> {
-        Self::try_new_with(points, order, ArcBlendTiming::Auto)
+        Self::try_with(points, order, ArcBlendTiming::Auto)
     }
 
     /// Builds the Cⁿ spline (`n = order`) through `points` with the given timing.
@@ -468,12 +468,12 @@ impl<P: Manifold> ArcBlend<P> {
     /// let p = |x, y, z| S2Point::try_new(DVec3::new(x, y, z)).unwrap();
     /// let points = vec![p(1.0, 0.0, 0.3), p(0.6, 0.8, 0.4), p(-0.2, 1.0, 0.1), p(-0.9, 0.3, -0.2)];
     /// let times = vec![0.0, 2.0, 3.0, 7.0];
-    /// let c = ArcBlend::try_new_with(points.clone(), 3, ArcBlendTiming::Knots(times)).unwrap();
+    /// let c = ArcBlend::try_with(points.clone(), 3, ArcBlendTiming::Knots(times)).unwrap();
     /// assert!(c.eval(3.0).dist(&points[2]) < 1e-15);
-    /// let d = ArcBlend::try_new_with(points, 3, ArcBlendTiming::ArcLength).unwrap();
+    /// let d = ArcBlend::try_with(points, 3, ArcBlendTiming::ArcLength).unwrap();
     /// assert!((d.jet(0.0).velocity.length() - 1.0).abs() < 1e-12); // unit speed at the start
     /// ```
-    pub fn try_new_with(
+    pub fn try_with(
         points: Vec<P>,
         order: usize,
         timing: ArcBlendTiming,
@@ -487,9 +487,9 @@ impl<P: Manifold> ArcBlend<P> {
     ///
     /// # Errors
     ///
-    /// As [`try_new_closed_with`](Self::try_new_closed_with).
+    /// As [`try_with_closed`](Self::try_with_closed).
     pub fn try_new_closed(points: Vec<P>, order: usize) -> Result<Self, SplineError> {
-        Self::try_new_closed_with(points, order, ArcBlendTiming::Auto)
+        Self::try_with_closed(points, order, ArcBlendTiming::Auto)
     }
 
     /// Builds the closed Cⁿ loop `p₀ → p₁ → … → p_{m−1} → p₀` (m ≥ 3) with the given timing.
@@ -523,13 +523,13 @@ impl<P: Manifold> ArcBlend<P> {
     ///
     /// let p = |x, y, z| S2Point::try_new(DVec3::new(x, y, z)).unwrap();
     /// let points = vec![p(1.0, 0.0, 0.3), p(0.2, 0.9, 0.4), p(-0.8, 0.4, 0.1), p(-0.3, -0.9, 0.5)];
-    /// let c = ArcBlend::try_new_closed_with(points.clone(), 3, ArcBlendTiming::Uniform).unwrap();
+    /// let c = ArcBlend::try_with_closed(points.clone(), 3, ArcBlendTiming::Uniform).unwrap();
     /// assert_eq!(c.knots(), [0.0, 1.0, 2.0, 3.0, 4.0]);
     /// assert!(c.eval(4.0).dist(&points[0]) < 1e-15);
     /// let seam = continuity(&c)[3]; // the seam at t = 4, C³ (checked here to order 2)
     /// assert!(seam.t == 4.0 && seam.c1 < 1e-12 && seam.c2 < 1e-11);
     /// ```
-    pub fn try_new_closed_with(
+    pub fn try_with_closed(
         points: Vec<P>,
         order: usize,
         timing: ArcBlendTiming,
@@ -538,8 +538,8 @@ impl<P: Manifold> ArcBlend<P> {
         Self::build(points, order, timing, true)
     }
 
-    /// The construction of [`try_new_with`](Self::try_new_with) and
-    /// [`try_new_closed_with`](Self::try_new_closed_with), on checked points: natively on `P`
+    /// The construction of [`try_with`](Self::try_with) and
+    /// [`try_with_closed`](Self::try_with_closed), on checked points: natively on `P`
     /// itself, in the wasm build once on S^m for every point type ([`crate::recast`]; the same
     /// bits, `tests::the_construction_gives_the_same_bits_on_sn`).
     fn build(

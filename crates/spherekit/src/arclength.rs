@@ -10,7 +10,7 @@ use crate::error::ArcLengthError;
 use crate::manifold::Manifold;
 
 /// The default accuracy of [`ArcLength`], in radians of arc length (rotation angle on S³).
-pub const DEFAULT_ACCURACY: f64 = 1e-10;
+pub const DEFAULT_ARC_LENGTH_ACCURACY: f64 = 1e-10;
 
 /// Gauss–Legendre nodes per cell.
 const NODES: usize = 10;
@@ -387,7 +387,7 @@ impl Cell {
 /// assert!((omega.length() - 1.0).abs() < 1e-12);
 /// // s ↦ t ↦ s.
 /// let t = c.param_at(0.3 * len);
-/// assert!((c.arc_length_at(t) - 0.3 * len).abs() < spherekit::DEFAULT_ACCURACY);
+/// assert!((c.arc_length_at(t) - 0.3 * len).abs() < spherekit::DEFAULT_ARC_LENGTH_ACCURACY);
 /// ```
 #[derive(Clone, Debug)]
 pub struct ArcLength<C: Curve> {
@@ -554,13 +554,13 @@ impl Builder<'_> {
 
 /// # Construction
 impl<C: Curve> ArcLength<C> {
-    /// The arc-length parametrisation to [`DEFAULT_ACCURACY`].
+    /// The arc-length parametrisation to [`DEFAULT_ARC_LENGTH_ACCURACY`].
     ///
     /// # Errors
     ///
     /// As [`try_with_accuracy`](Self::try_with_accuracy).
     pub fn try_new(curve: C) -> Result<Self, ArcLengthError> {
-        Self::try_with_accuracy(curve, DEFAULT_ACCURACY)
+        Self::try_with_accuracy(curve, DEFAULT_ARC_LENGTH_ACCURACY)
     }
 
     /// The arc-length parametrisation with `s(t)` within `accuracy` radians of the true arc

@@ -49,7 +49,7 @@
 //! sections ([`PlaneSection`]) and the Bernstein polynomials ([`bernstein`]).
 //!
 //! Every type but the two Bézier curves also builds a **closed loop** (`try_new_closed`, and
-//! [`ArcBlend::try_new_closed_with`]): the points wrap around, the curve returns to its first
+//! [`ArcBlend::try_with_closed`]): the points wrap around, the curve returns to its first
 //! point, [`Curve::is_closed`] is `true`, and the seam is a joint as smooth as the others, which
 //! [`continuity`] reports last (`docs/derivations.md#closed-loops`).
 //!
@@ -145,7 +145,7 @@ mod squad;
 
 pub use ambient::{Ambient, VecN};
 pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
-pub use arclength::{ArcLength, ArcLengthInfo, DEFAULT_ACCURACY, Stall};
+pub use arclength::{ArcLength, ArcLengthInfo, DEFAULT_ARC_LENGTH_ACCURACY, Stall};
 pub use beta_spline::{
     BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
 };

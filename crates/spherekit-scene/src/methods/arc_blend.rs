@@ -57,9 +57,9 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let (knots, used);
     let built = on_every_sphere!(input.points, |p| {
         let curve = if closed {
-            ArcBlend::try_new_closed_with(p.clone(), order, timing.clone())?
+            ArcBlend::try_with_closed(p.clone(), order, timing.clone())?
         } else {
-            ArcBlend::try_new_with(p.clone(), order, timing.clone())?
+            ArcBlend::try_with(p.clone(), order, timing.clone())?
         };
         knots = curve.knots().to_vec();
         used = curve.timing().name();

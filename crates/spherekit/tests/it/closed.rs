@@ -421,7 +421,7 @@ fn arc_blend_loops_are_cn_at_the_seam_for_every_timing() {
             let q = ring_s3(&mut rng, m);
             let s = ring_s5(&mut rng, m);
             for timing in timings {
-                let c = ArcBlend::try_new_closed_with(p.clone(), n, timing.clone()).unwrap();
+                let c = ArcBlend::try_with_closed(p.clone(), n, timing.clone()).unwrap();
                 let smooth = if n == 1 { Smooth::C1 } else { Smooth::C2 };
                 check_loop(&c, Some((&p, c.knots())), smooth);
                 let [t0, t1] = c.domain();
@@ -430,7 +430,7 @@ fn arc_blend_loops_are_cn_at_the_seam_for_every_timing() {
                     &c.derivatives(t0, Side::Right, n),
                     n,
                 );
-                let c = ArcBlend::try_new_closed_with(q.clone(), n, timing.clone()).unwrap();
+                let c = ArcBlend::try_with_closed(q.clone(), n, timing.clone()).unwrap();
                 check_loop(&c, Some((&q, c.knots())), smooth);
                 let [t0, t1] = c.domain();
                 check_seam_order(
@@ -438,7 +438,7 @@ fn arc_blend_loops_are_cn_at_the_seam_for_every_timing() {
                     &c.derivatives(t0, Side::Right, n),
                     n,
                 );
-                let c = ArcBlend::try_new_closed_with(s.clone(), n, timing).unwrap();
+                let c = ArcBlend::try_with_closed(s.clone(), n, timing).unwrap();
                 check_loop(&c, Some((&s, c.knots())), smooth);
             }
         }
@@ -465,7 +465,7 @@ fn arc_blend_loop_of_co_circular_points_is_the_circle() {
             ArcBlendTiming::Book,
             "auto takes the book's knots"
         );
-        let explicit = ArcBlend::try_new_closed_with(p.clone(), n, ArcBlendTiming::Book).unwrap();
+        let explicit = ArcBlend::try_with_closed(p.clone(), n, ArcBlendTiming::Book).unwrap();
         assert_eq!(explicit.knots(), book.knots());
         check_loop(&book, Some((&p, book.knots())), Smooth::C2);
         // The book's knots are the angles: t_i = α_i (unit angular speed, radius 0.8).
@@ -477,7 +477,7 @@ fn arc_blend_loop_of_co_circular_points_is_the_circle() {
             ArcBlendTiming::ArcLength,
             ArcBlendTiming::Uniform,
         ] {
-            let c = ArcBlend::try_new_closed_with(p.clone(), n, timing.clone()).unwrap();
+            let c = ArcBlend::try_with_closed(p.clone(), n, timing.clone()).unwrap();
             let [t0, t1] = c.domain();
             for j in 0..=700 {
                 let t = t0 + (t1 - t0) * f64::from(j) / 700.0;
@@ -658,7 +658,7 @@ fn bad_loops_are_typed_errors() {
         count
     );
     assert_eq!(
-        ArcBlend::try_new_closed_with(p.clone(), 2, ArcBlendTiming::Knots(uniform(5))).unwrap_err(),
+        ArcBlend::try_with_closed(p.clone(), 2, ArcBlendTiming::Knots(uniform(5))).unwrap_err(),
         count
     );
     let flat_knots = vec![0.0, 1.0, 2.0, 2.0, 3.0, 4.0];
@@ -677,7 +677,7 @@ fn bad_loops_are_typed_errors() {
         increasing
     );
     assert_eq!(
-        ArcBlend::try_new_closed_with(p.clone(), 2, ArcBlendTiming::Knots(flat_knots)).unwrap_err(),
+        ArcBlend::try_with_closed(p.clone(), 2, ArcBlendTiming::Knots(flat_knots)).unwrap_err(),
         increasing
     );
     // γ: one per knot but the last.
@@ -747,7 +747,7 @@ fn bad_loops_are_typed_errors() {
         }
     );
     // The book's knots close only when the ratios ψ/φ multiply to 1.
-    let e = ArcBlend::try_new_closed_with(p.clone(), 2, ArcBlendTiming::Book).unwrap_err();
+    let e = ArcBlend::try_with_closed(p.clone(), 2, ArcBlendTiming::Book).unwrap_err();
     assert!(
         matches!(e, SplineError::TimingNotClosed { timing: "book", ratio } if (ratio - 1.0).abs() > 1e-6),
         "{e:?}"

@@ -191,7 +191,7 @@ fn arc_blends<P: Manifold>(keys: &[P], space: &str) {
         );
         check_arc_blend_cn(&c, &format!("arc-blend {space}"));
     }
-    let u = ArcBlend::try_new_with(keys.to_vec(), 3, ArcBlendTiming::Uniform).unwrap();
+    let u = ArcBlend::try_with(keys.to_vec(), 3, ArcBlendTiming::Uniform).unwrap();
     check_arc_blend_cn(&u, &format!("arc-blend uniform {space}"));
 }
 
@@ -323,7 +323,7 @@ fn arc_blend_long_sequence_on_s5() {
 #[test]
 fn arc_blend_ten_thousand_directions_used_to_fail() {
     let keys = walk_s2(7, 10_000);
-    let err = ArcBlend::try_new_with(keys.clone(), 2, ArcBlendTiming::Book).unwrap_err();
+    let err = ArcBlend::try_with(keys.clone(), 2, ArcBlendTiming::Book).unwrap_err();
     assert!(
         matches!(
             err,
@@ -410,7 +410,7 @@ fn arc_blend_co_circular_long_sequence_is_the_circle() {
 #[test]
 fn arc_blend_book_timing_error_message() {
     let keys = walk_s2(7, 10_000);
-    let err = ArcBlend::try_new_with(keys, 2, ArcBlendTiming::Book).unwrap_err();
+    let err = ArcBlend::try_with(keys, 2, ArcBlendTiming::Book).unwrap_err();
     let SplineError::TimingNotRepresentable {
         index,
         spacing,
@@ -450,7 +450,7 @@ fn arc_blend_arc_length_timing_error_message() {
             * 3e-14),
     );
     keys.push(tiny);
-    let err = ArcBlend::try_new_with(keys.clone(), 2, ArcBlendTiming::ArcLength).unwrap_err();
+    let err = ArcBlend::try_with(keys.clone(), 2, ArcBlendTiming::ArcLength).unwrap_err();
     assert!(
         matches!(
             err,
@@ -544,14 +544,14 @@ fn distance_to<C: Curve>(curve: &C, lo: f64, hi: f64, p: &C::Point) -> f64 {
 #[test]
 fn arc_blend_timings_trace_the_same_curve() {
     let keys = walk_s2(9, 40);
-    let book = ArcBlend::try_new_with(keys.clone(), 2, ArcBlendTiming::Book).unwrap();
+    let book = ArcBlend::try_with(keys.clone(), 2, ArcBlendTiming::Book).unwrap();
     let times: Vec<f64> = (0..keys.len()).map(|i| (i as f64).powf(1.3)).collect();
     for timing in [
         ArcBlendTiming::ArcLength,
         ArcBlendTiming::Uniform,
         ArcBlendTiming::Knots(times),
     ] {
-        let c = ArcBlend::try_new_with(keys.clone(), 2, timing.clone()).unwrap();
+        let c = ArcBlend::try_with(keys.clone(), 2, timing.clone()).unwrap();
         assert_eq!(c.timing(), timing, "timing reported");
         let (a, b) = (book.knots(), c.knots());
         for i in 0..keys.len() - 1 {
