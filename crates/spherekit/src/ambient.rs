@@ -231,6 +231,36 @@ impl Ambient for VecN {
     }
 }
 
+/// An orthonormal basis of the span of `vectors` (modified Gram–Schmidt, twice, on the
+/// normalised vectors; zero vectors are skipped).
+pub(crate) fn span_basis<'a, V: Ambient + 'a>(
+    dim: usize,
+    vectors: impl IntoIterator<Item = &'a V>,
+) -> Vec<V> {
+    let mut basis: Vec<V> = Vec::with_capacity(dim);
+    for p in vectors {
+        if basis.len() == dim {
+            break;
+        }
+        let l = p.length();
+        if l == 0.0 {
+            continue;
+        }
+        let mut v = p.clone() * (1.0 / l);
+        for _ in 0..2 {
+            for b in &basis {
+                let c = b.dot(&v);
+                v = v - b.clone() * c;
+            }
+        }
+        let l = v.length();
+        if l > 1e-13 {
+            basis.push(v * (1.0 / l));
+        }
+    }
+    basis
+}
+
 /// The length of a finite vector whose sum of squares overflows: rescaled by its largest
 /// coordinate (the rare path of [`Ambient::length`], kept out of line so that the common one
 /// inlines).

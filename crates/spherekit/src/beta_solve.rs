@@ -29,7 +29,8 @@
 use glam::{DVec3, DVec4};
 
 use crate::ambient::{Ambient, VecN};
-use crate::manifold::{geodesic_frame, renormalize};
+use crate::banded::BlockTridiagonal;
+use crate::manifold::{exp_vector, geodesic_frame, renormalize, slerp_vector};
 use crate::math;
 
 /// Coordinate vectors the kernel computes in.
@@ -111,17 +112,6 @@ pub(crate) struct Settings {
 // ---------------------------------------------------------------------------------------------
 // Scalar helpers
 
-/// Derivative of `sin x / x`.
-fn dsinc(x: f64) -> f64 {
-    if x.abs() < 1e-3 {
-        let x2 = x * x;
-        x * (-1.0 / 3.0 + x2 * (1.0 / 30.0 - x2 / 840.0))
-    } else {
-        let (s, c) = math::sin_cos(x);
-        (x * c - s) / (x * x)
-    }
-}
-
 /// `r(s, θ) = sin(sθ)/sin θ` (`r(s, 0) = s`), for θ ∈ [0, π).
 fn ratio_value(s: f64, theta: f64) -> f64 {
     s * math::sinc(s * theta) / math::sinc(theta)
@@ -131,6 +121,7 @@ fn ratio_value(s: f64, theta: f64) -> f64 {
 pub(crate) fn ratio(s: f64, theta: f64) -> (f64, f64) {
     let (a, b) = (math::sinc(s * theta), math::sinc(theta));
     let r = s * a / b;
+    let dsinc = |x: f64| math::sinc_deriv(x, math::sin_cos(x));
     let dr = s * (s * dsinc(s * theta) * b - a * dsinc(theta)) / (b * b);
     (r, dr)
 }
@@ -144,10 +135,8 @@ fn angle<V: Ambient>(a: &V, b: &V) -> f64 {
 }
 
 /// `G[a, b](s)`; `None` for antipodal `a, b`.
-pub(crate) fn slerp<V: Ambient>(a: &V, b: &V, s: f64) -> Option<V> {
-    let (theta, e) = geodesic_frame(a, b)?;
-    let (sn, cs) = math::sin_cos(s * theta);
-    Some(renormalize(a.clone() * cs + e * sn))
+fn slerp<V: Ambient>(a: &V, b: &V, s: f64) -> Option<V> {
+    slerp_vector(a, b, s).ok()
 }
 
 /// `G[a, b](s)` with its derivatives with respect to the end points.
@@ -521,11 +510,8 @@ impl<'a, V: Coords> System<'a, V> {
                 }
             }
         }
-        let x = if self.closed {
-            block_cyclic_solve(b, &lower, &diag, &upper, &rhs)?
-        } else {
-            block_tridiagonal_solve(b, &lower, &diag, &upper, &rhs)?
-        };
+        let mut x = rhs;
+        BlockTridiagonal::factor(b, &lower, &diag, &upper, self.closed)?.solve(&mut x);
         x.iter().all(|v| v.is_finite()).then_some((bases, x))
     }
 
@@ -574,201 +560,10 @@ impl<'a, V: Coords> System<'a, V> {
     }
 }
 
-/// `exp_x(v) = cos|v|·x + sinc|v|·v`.
+/// `exp_x(v)` ([`Manifold::try_exp`](crate::Manifold::try_exp)); `x` itself for a
+/// non-finite `v`.
 fn exp<V: Ambient>(x: &V, v: &V) -> V {
-    let t = v.length();
-    renormalize(x.clone() * math::cos(t) + v.clone() * math::sinc(t))
-}
-
-// ---------------------------------------------------------------------------------------------
-// Dense and block-tridiagonal linear algebra
-
-/// Solves `M·X = B` in place (`M`: `b×b`, `B`: `b×c`, row-major) by Gaussian elimination with
-/// partial pivoting; `None` if `M` is numerically singular.
-fn dense_solve(b: usize, m: &mut [f64], rhs: &mut [f64], c: usize) -> Option<()> {
-    let scale = m.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-    if !(scale > 0.0 && scale.is_finite()) {
-        return None;
-    }
-    for k in 0..b {
-        let mut piv = k;
-        for i in k + 1..b {
-            if m[i * b + k].abs() > m[piv * b + k].abs() {
-                piv = i;
-            }
-        }
-        if m[piv * b + k].abs() <= 1e-14 * scale {
-            return None;
-        }
-        if piv != k {
-            for j in 0..b {
-                m.swap(k * b + j, piv * b + j);
-            }
-            for j in 0..c {
-                rhs.swap(k * c + j, piv * c + j);
-            }
-        }
-        let inv = 1.0 / m[k * b + k];
-        for i in k + 1..b {
-            let f = m[i * b + k] * inv;
-            if f == 0.0 {
-                continue;
-            }
-            for j in k..b {
-                m[i * b + j] -= f * m[k * b + j];
-            }
-            for j in 0..c {
-                rhs[i * c + j] -= f * rhs[k * c + j];
-            }
-        }
-    }
-    for k in (0..b).rev() {
-        let inv = 1.0 / m[k * b + k];
-        for j in 0..c {
-            let mut s = rhs[k * c + j];
-            for i in k + 1..b {
-                s -= m[k * b + i] * rhs[i * c + j];
-            }
-            rhs[k * c + j] = s * inv;
-        }
-    }
-    Some(())
-}
-
-/// Solves a block-tridiagonal system (block Thomas algorithm) with `b×b` blocks: row `i` is
-/// `Lᵢ·x_{i−1} + Dᵢ·xᵢ + Uᵢ·x_{i+1} = rᵢ`. O(rows·b³).
-pub(crate) fn block_tridiagonal_solve(
-    b: usize,
-    lower: &[f64],
-    diag: &[f64],
-    upper: &[f64],
-    rhs: &[f64],
-) -> Option<Vec<f64>> {
-    let bb = b * b;
-    let rows = rhs.len() / b;
-    if rows == 0 {
-        return Some(Vec::new());
-    }
-    // c'ᵢ = Mᵢ⁻¹·Uᵢ and y'ᵢ = Mᵢ⁻¹·(rᵢ − Lᵢ·y'ᵢ₋₁) with Mᵢ = Dᵢ − Lᵢ·c'ᵢ₋₁.
-    let mut cp = vec![0.0; rows * bb];
-    let mut yp = vec![0.0; rows * b];
-    let mut m = vec![0.0; bb];
-    let mut aug = vec![0.0; b * (b + 1)];
-    for i in 0..rows {
-        m.copy_from_slice(&diag[i * bb..(i + 1) * bb]);
-        let mut y: Vec<f64> = rhs[i * b..(i + 1) * b].to_vec();
-        if i > 0 {
-            let l = &lower[i * bb..(i + 1) * bb];
-            let cprev = &cp[(i - 1) * bb..i * bb];
-            let yprev = &yp[(i - 1) * b..i * b];
-            for r in 0..b {
-                for c in 0..b {
-                    let mut s = 0.0;
-                    for k in 0..b {
-                        s += l[r * b + k] * cprev[k * b + c];
-                    }
-                    m[r * b + c] -= s;
-                }
-                let mut s = 0.0;
-                for k in 0..b {
-                    s += l[r * b + k] * yprev[k];
-                }
-                y[r] -= s;
-            }
-        }
-        // Augmented right-hand side [Uᵢ | y].
-        for r in 0..b {
-            for c in 0..b {
-                aug[r * (b + 1) + c] = upper[i * bb + r * b + c];
-            }
-            aug[r * (b + 1) + b] = y[r];
-        }
-        dense_solve(b, &mut m, &mut aug, b + 1)?;
-        for r in 0..b {
-            for c in 0..b {
-                cp[i * bb + r * b + c] = aug[r * (b + 1) + c];
-            }
-            yp[i * b + r] = aug[r * (b + 1) + b];
-        }
-    }
-    let mut x = yp;
-    for i in (0..rows - 1).rev() {
-        for r in 0..b {
-            let mut s = 0.0;
-            for k in 0..b {
-                s += cp[i * bb + r * b + k] * x[(i + 1) * b + k];
-            }
-            x[i * b + r] -= s;
-        }
-    }
-    Some(x)
-}
-
-/// Solves a block cyclic tridiagonal system with `b×b` blocks: row `i` is
-/// `Lᵢ·x_{i−1} + Dᵢ·xᵢ + Uᵢ·x_{i+1} = rᵢ` with indices mod R (R ≥ 3 rows; `L₀` couples `x_{R−1}`
-/// and `U_{R−1}` couples `x₀`). Bordering: with `T` the tridiagonal part of rows `0 … R−2` and
-/// `C` its column to `x_{R−1}` (`L₀` in row 0, `U_{R−2}` in row R−2), `T·y = r'` and `T·Z = C`
-/// give `x' = y − Z·x_{R−1}`, and the last row becomes the `b×b` system
-/// `(D_{R−1} − L_{R−1}Z_{R−2} − U_{R−1}Z₀)·x_{R−1} = r_{R−1} − L_{R−1}y_{R−2} − U_{R−1}y₀`.
-/// O(R·b⁴).
-pub(crate) fn block_cyclic_solve(
-    b: usize,
-    lower: &[f64],
-    diag: &[f64],
-    upper: &[f64],
-    rhs: &[f64],
-) -> Option<Vec<f64>> {
-    let bb = b * b;
-    let rows = rhs.len() / b;
-    if rows < 3 {
-        return None;
-    }
-    let inner = rows - 1;
-    let (tl, td, tu) = (
-        &lower[..inner * bb],
-        &diag[..inner * bb],
-        &upper[..inner * bb],
-    );
-    let y = block_tridiagonal_solve(b, tl, td, tu, &rhs[..inner * b])?;
-    // Z column by column: z[c] is the solution for column c of C.
-    let mut z = Vec::with_capacity(b);
-    for c in 0..b {
-        let mut col = vec![0.0; inner * b];
-        for r in 0..b {
-            col[r] = lower[r * b + c];
-            col[(inner - 1) * b + r] += upper[(inner - 1) * bb + r * b + c];
-        }
-        z.push(block_tridiagonal_solve(b, tl, td, tu, &col)?);
-    }
-    let (l_last, d_last, u_last) = (
-        &lower[inner * bb..rows * bb],
-        &diag[inner * bb..rows * bb],
-        &upper[inner * bb..rows * bb],
-    );
-    let mut m = d_last.to_vec();
-    let mut v: Vec<f64> = rhs[inner * b..].to_vec();
-    for r in 0..b {
-        for k in 0..b {
-            let (lk, uk) = (l_last[r * b + k], u_last[r * b + k]);
-            v[r] -= lk * y[(inner - 1) * b + k] + uk * y[k];
-            for (c, zc) in z.iter().enumerate() {
-                m[r * b + c] -= lk * zc[(inner - 1) * b + k] + uk * zc[k];
-            }
-        }
-    }
-    dense_solve(b, &mut m, &mut v, 1)?;
-    let mut x = Vec::with_capacity(rows * b);
-    for i in 0..inner {
-        for r in 0..b {
-            let mut s = y[i * b + r];
-            for (c, zc) in z.iter().enumerate() {
-                s -= zc[i * b + r] * v[c];
-            }
-            x.push(s);
-        }
-    }
-    x.extend_from_slice(&v);
-    Some(x)
+    exp_vector(x, v).unwrap_or_else(|_| x.clone())
 }
 
 #[cfg(test)]
@@ -873,74 +668,6 @@ mod tests {
                     assert!(a.z == 0.0 && a.w == 0.0, "stays in the active span");
                 }
             }
-        }
-    }
-
-    #[test]
-    fn block_cyclic_matches_dense() {
-        // 4 rows of 2×2 blocks with corner couplings, diagonally dominant.
-        let (b, rows) = (2, 4);
-        let mut seed = 7_u64;
-        let mut next = || {
-            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
-        let mut blocks = |scale: f64, diagonal: f64| -> Vec<f64> {
-            (0..rows * 4)
-                .map(|k| {
-                    let on = k % 4 == 0 || k % 4 == 3;
-                    scale * next() + if on { diagonal } else { 0.0 }
-                })
-                .collect()
-        };
-        let (lower, diag, upper) = (blocks(1.0, 0.0), blocks(1.0, 5.0), blocks(1.0, 0.0));
-        let x_true = [1.0, -2.0, 0.5, 3.0, -1.5, 2.5, 0.25, -0.75];
-        let mut rhs = [0.0; 8];
-        for i in 0..rows {
-            let (p, q) = ((i + rows - 1) % rows, (i + 1) % rows);
-            for r in 0..b {
-                let mut s = 0.0;
-                for c in 0..b {
-                    s += diag[i * 4 + r * 2 + c] * x_true[i * 2 + c]
-                        + lower[i * 4 + r * 2 + c] * x_true[p * 2 + c]
-                        + upper[i * 4 + r * 2 + c] * x_true[q * 2 + c];
-                }
-                rhs[i * 2 + r] = s;
-            }
-        }
-        let x = block_cyclic_solve(b, &lower, &diag, &upper, &rhs).unwrap();
-        for (a, e) in x.iter().zip(x_true) {
-            assert!((a - e).abs() < 1e-13, "{a} vs {e}");
-        }
-    }
-
-    #[test]
-    fn block_tridiagonal_matches_dense() {
-        // 3 rows of 2×2 blocks.
-        let b = 2;
-        let lower = [0.0, 0.0, 0.0, 0.0, 0.3, -0.1, 0.2, 0.4, -0.2, 0.1, 0.5, 0.3];
-        let diag = [4.0, 1.0, -1.0, 3.0, 5.0, 0.5, 0.2, 4.0, 3.0, -1.0, 1.0, 6.0];
-        let upper = [0.5, 0.2, 0.1, -0.3, 0.7, 0.1, 0.0, 0.6, 0.0, 0.0, 0.0, 0.0];
-        let x_true = [1.0, -2.0, 0.5, 3.0, -1.5, 2.5];
-        let mut rhs = [0.0; 6];
-        for i in 0..3 {
-            for r in 0..2 {
-                let mut s = 0.0;
-                for c in 0..2 {
-                    s += diag[i * 4 + r * 2 + c] * x_true[i * 2 + c];
-                    if i > 0 {
-                        s += lower[i * 4 + r * 2 + c] * x_true[(i - 1) * 2 + c];
-                    }
-                    if i < 2 {
-                        s += upper[i * 4 + r * 2 + c] * x_true[(i + 1) * 2 + c];
-                    }
-                }
-                rhs[i * 2 + r] = s;
-            }
-        }
-        let x = block_tridiagonal_solve(b, &lower, &diag, &upper, &rhs).unwrap();
-        for (a, e) in x.iter().zip(x_true) {
-            assert!((a - e).abs() < 1e-13, "{a} vs {e}");
         }
     }
 }

@@ -7,7 +7,7 @@
 #[cfg(any(test, not(target_arch = "wasm32")))]
 use glam::{DVec3, DVec4};
 
-use crate::ambient::{Ambient, VecN};
+use crate::ambient::{Ambient, VecN, span_basis};
 use crate::beta_solve::{Coords, Settings, Shape, System};
 use crate::bezier::CubicSegment;
 use crate::curve::{Curve, Jet, Side, clamp_param};
@@ -819,29 +819,6 @@ fn positive(v: Option<f64>, name: &'static str, default: f64) -> Result<f64, Spl
     }
 }
 
-/// An orthonormal basis of the span of the points (modified Gram–Schmidt, twice).
-fn span_basis<V: Ambient>(points: &[V]) -> Vec<V> {
-    let dim = points[0].dim();
-    let mut basis: Vec<V> = Vec::with_capacity(dim);
-    for p in points {
-        if basis.len() == dim {
-            break;
-        }
-        let mut v = p.clone();
-        for _ in 0..2 {
-            for b in &basis {
-                let c = b.dot(&v);
-                v = v - b.clone() * c;
-            }
-        }
-        let l = v.length();
-        if l > 1e-13 {
-            basis.push(v * (1.0 / l));
-        }
-    }
-    basis
-}
-
 /// Solves for the auxiliary vertices; returns them and the iteration count.
 fn solve<P: Manifold>(
     points: &[P],
@@ -851,7 +828,7 @@ fn solve<P: Manifold>(
     closed: bool,
 ) -> Result<(Vec<P>, usize), SplineError> {
     let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
-    let basis = span_basis(&vectors);
+    let basis = span_basis(points[0].to_vector().dim(), &vectors);
     let rank = basis.len();
     if rank < 2 {
         // Unreachable after the coincidence and antipodality checks; never index with r − 1 < 0.

@@ -110,6 +110,7 @@ pub use glam;
 mod ambient;
 mod arc_blend;
 mod arclength;
+mod banded;
 pub mod bernstein;
 mod beta_solve;
 mod beta_spline;

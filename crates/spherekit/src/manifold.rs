@@ -123,19 +123,7 @@ pub trait Manifold: Clone + Debug + PartialEq {
     ///
     /// [`PointError::NonFinite`] if a coordinate of `v` is NaN or infinite.
     fn try_exp(&self, v: &Self::Vector) -> Result<Self, PointError> {
-        if !v.is_finite() {
-            return Err(PointError::NonFinite);
-        }
-        let p = self.to_vector();
-        let theta = v.length();
-        let r = if theta.is_finite() {
-            let (s, c) = math::sin_cos(theta);
-            p * c + v.clone() * (if theta > 0.0 { s / theta } else { 1.0 })
-        } else {
-            let (s, c, dir) = sin_cos_direction_huge(v);
-            p * c + dir * s
-        };
-        Ok(Self::from_vector_unchecked(renormalize(r)))
+        exp_vector(&self.to_vector(), v).map(Self::from_vector_unchecked)
     }
 
     /// Like [`try_exp`](Manifold::try_exp), but `self` (the point at `v = 0`) for a tangent
@@ -162,14 +150,7 @@ pub trait Manifold: Clone + Debug + PartialEq {
         if t == 1.0 {
             return Ok(other.clone());
         }
-        let p = self.to_vector();
-        let (theta, e) = geodesic_frame(&p, &other.to_vector()).ok_or(PointError::Antipodal)?;
-        let angle = t * theta;
-        if !angle.is_finite() {
-            return Err(PointError::NonFiniteParameter);
-        }
-        let (s, c) = math::sin_cos(angle);
-        Ok(Self::from_vector_unchecked(renormalize(p * c + e * s)))
+        slerp_vector(&self.to_vector(), &other.to_vector(), t).map(Self::from_vector_unchecked)
     }
 
     /// Like [`try_slerp`](Manifold::try_slerp), but `self` (the point at `t = 0`) where that
@@ -197,6 +178,43 @@ pub trait Manifold: Clone + Debug + PartialEq {
             project(v.clone() * (1.0 / 16.0)) * 16.0
         }
     }
+}
+
+/// [`Manifold::try_exp`] on ambient vectors: `cos|v|·p + sin|v|·v/|v|`, renormalised.
+///
+/// # Errors
+///
+/// [`PointError::NonFinite`] if a coordinate of `v` is NaN or infinite.
+pub(crate) fn exp_vector<V: Ambient>(p: &V, v: &V) -> Result<V, PointError> {
+    if !v.is_finite() {
+        return Err(PointError::NonFinite);
+    }
+    let theta = v.length();
+    let r = if theta.is_finite() {
+        let (s, c) = math::sin_cos(theta);
+        p.clone() * c + v.clone() * (if theta > 0.0 { s / theta } else { 1.0 })
+    } else {
+        let (s, c, dir) = sin_cos_direction_huge(v);
+        p.clone() * c + dir * s
+    };
+    Ok(renormalize(r))
+}
+
+/// [`Manifold::try_slerp`] on ambient vectors, for a finite `t` (without its shortcuts at
+/// `t = 0` and `t = 1`): `cos(tθ)·p + sin(tθ)·e` with `θ, e` from [`geodesic_frame`].
+///
+/// # Errors
+///
+/// [`PointError::Antipodal`] for antipodal points; [`PointError::NonFiniteParameter`] if `t·θ`
+/// overflows.
+pub(crate) fn slerp_vector<V: Ambient>(p: &V, q: &V, t: f64) -> Result<V, PointError> {
+    let (theta, e) = geodesic_frame(p, q).ok_or(PointError::Antipodal)?;
+    let angle = t * theta;
+    if !angle.is_finite() {
+        return Err(PointError::NonFiniteParameter);
+    }
+    let (s, c) = math::sin_cos(angle);
+    Ok(renormalize(p.clone() * c + e * s))
 }
 
 /// `(sin θ, cos θ, v/θ)` for a finite vector `v` whose length `θ` overflows even when computed

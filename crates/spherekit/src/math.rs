@@ -78,6 +78,35 @@ pub(crate) fn inv_sinc(x: f64) -> f64 {
     }
 }
 
+/// Below this argument [`sinc_deriv`] and [`kappa`] use their series (to x¹¹: the first term
+/// left out is below 1e-17 relative there; the closed forms lose `~1e-16/x²` to cancellation).
+const SERIES_THRESHOLD_DERIVATIVES: f64 = 0.1;
+
+/// `σ′(x) = (x cos x − sin x)/x²`, the derivative of [`sinc`], from `(sin x, cos x)` (a series
+/// below [`SERIES_THRESHOLD_DERIVATIVES`], where the closed form cancels).
+pub(crate) fn sinc_deriv(x: f64, (s, c): (f64, f64)) -> f64 {
+    if x.abs() < SERIES_THRESHOLD_DERIVATIVES {
+        let x2 = x * x;
+        x * (-1.0 / 3.0
+            + x2 * (1.0 / 30.0 + x2 * (-1.0 / 840.0 + x2 * (1.0 / 45360.0 - x2 / 3_991_680.0))))
+    } else {
+        (x * c - s) / (x * x)
+    }
+}
+
+/// `κ(x) = (x − sin x cos x)/x²`, the curvature term of the cubic's continuity equations (a
+/// series below [`SERIES_THRESHOLD_DERIVATIVES`]).
+pub(crate) fn kappa(x: f64) -> f64 {
+    if x.abs() < SERIES_THRESHOLD_DERIVATIVES {
+        let x2 = x * x;
+        x * (2.0 / 3.0
+            + x2 * (-2.0 / 15.0 + x2 * (4.0 / 315.0 + x2 * (-2.0 / 2835.0 + x2 * 4.0 / 155_925.0))))
+    } else {
+        let (s, c) = sin_cos(x);
+        (x - s * c) / (x * x)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -102,5 +131,26 @@ mod tests {
             (sinc(1e-6) - (1.0 - 1e-12 / 6.0)).abs() < 1e-18,
             "sinc near 0"
         );
+    }
+
+    #[test]
+    fn derivative_series_match_closed_forms_at_the_switch() {
+        let dsinc: fn(f64) -> f64 = |x| sinc_deriv(x, sin_cos(x));
+        for f in [dsinc, kappa] {
+            // One ulp apart across the switch: the series below, the closed form at 0.1.
+            let below = f(SERIES_THRESHOLD_DERIVATIVES - 1.5e-17);
+            let above = f(SERIES_THRESHOLD_DERIVATIVES);
+            assert!((below - above).abs() < 1e-15, "{below} vs {above}");
+        }
+        assert!(
+            (kappa(1.0) - (1.0 - 1f64.sin() * 1f64.cos())).abs() < 1e-16,
+            "kappa(1)"
+        );
+        // sinc′ against central differences of sinc.
+        for x in [1e-3, 0.05, 0.3, 1.0, 2.5] {
+            let h = 1e-6;
+            let fd = (sinc(x + h) - sinc(x - h)) / (2.0 * h);
+            assert!((dsinc(x) - fd).abs() < 1e-9, "sinc′({x})");
+        }
     }
 }

@@ -4,31 +4,8 @@
 //! The continuity equations in frame coordinates: the scalars of each segment, the nonlinear
 //! term `T` and its bilinear form, and the small dense algebra both solvers use.
 
+use crate::banded::{dot, mat_t_vec};
 use crate::math;
-
-/// `σ′(x) = (x cos x − sin x)/x²`, the derivative of `sin x / x`, from `(sin x, cos x)` (series
-/// below 0.1).
-pub(super) fn sinc_deriv(x: f64, (s, c): (f64, f64)) -> f64 {
-    if x.abs() < 0.1 {
-        let x2 = x * x;
-        x * (-1.0 / 3.0
-            + x2 * (1.0 / 30.0 + x2 * (-1.0 / 840.0 + x2 * (1.0 / 45360.0 - x2 / 3_991_680.0))))
-    } else {
-        (x * c - s) / (x * x)
-    }
-}
-
-/// `κ(x) = (x − sin x cos x)/x²` (series below 0.1).
-pub(super) fn kappa(x: f64) -> f64 {
-    if x.abs() < 0.1 {
-        let x2 = x * x;
-        x * (2.0 / 3.0
-            + x2 * (-2.0 / 15.0 + x2 * (4.0 / 315.0 + x2 * (-2.0 / 2835.0 + x2 * 4.0 / 155_925.0))))
-    } else {
-        let (s, c) = math::sin_cos(x);
-        (x - s * c) / (x * x)
-    }
-}
 
 /// Scalars of one segment used by the solver.
 #[derive(Clone, Debug)]
@@ -54,8 +31,8 @@ impl SegConst {
                 h,
                 sinc: math::sinc(theta),
                 inv_sinc: math::inv_sinc(theta),
-                kappa: kappa(theta),
-                dsinc: sinc_deriv(theta, (sn, cs)),
+                kappa: math::kappa(theta),
+                dsinc: math::sinc_deriv(theta, (sn, cs)),
                 c2: 2.0 / h,
                 c4: 4.0 / h,
                 c6: 6.0 * theta / (h * h),
@@ -193,55 +170,6 @@ pub(super) fn s_matrix(e: &[f64], sigma: f64, scale: f64, out: &mut [f64]) {
             out[i * m + j] = scale * (id + (1.0 - sigma) * e[i] * e[j]);
         }
     }
-}
-
-/// `out = a·b` for `m × m` row-major blocks.
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn mat_mul(m: usize, a: &[f64], b: &[f64], out: &mut [f64]) {
-    for i in 0..m {
-        for j in 0..m {
-            let mut s = 0.0;
-            for l in 0..m {
-                s += a[i * m + l] * b[l * m + j];
-            }
-            out[i * m + j] = s;
-        }
-    }
-}
-
-/// `out = a·bᵀ`, entry by entry the [`dot`] of a row of `a` and a row of `b`.
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn mat_mul_t(m: usize, a: &[f64], b: &[f64], out: &mut [f64]) {
-    for i in 0..m {
-        for j in 0..m {
-            out[i * m + j] = dot(&a[i * m..(i + 1) * m], &b[j * m..(j + 1) * m]);
-        }
-    }
-}
-
-/// `out = a·x`.
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn mat_vec(m: usize, a: &[f64], x: &[f64], out: &mut [f64]) {
-    for i in 0..m {
-        let mut s = 0.0;
-        for l in 0..m {
-            s += a[i * m + l] * x[l];
-        }
-        out[i] = s;
-    }
-}
-
-/// `out = aᵀ·x`, summed as [`dot`].
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn mat_t_vec(m: usize, a: &[f64], x: &[f64], out: &mut [f64]) {
-    for (j, o) in out[..m].iter_mut().enumerate() {
-        *o = (0..m).map(|l| a[l * m + j] * x[l]).sum();
-    }
-}
-
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// `x ← S x` with `S = σ·I + (1 − σ)·ê êᵀ` (pass `1/sinc θ` for `S⁻¹`).

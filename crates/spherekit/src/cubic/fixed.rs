@@ -3,10 +3,9 @@
 
 //! The solver for tangent dimensions 1 to 3, on arrays.
 
-use super::equations::{
-    Geometry, SegConst, add_t, apply_s, dot, mat_mul, mat_mul_t, mat_t_vec, mat_vec, s_matrix,
-};
+use super::equations::{Geometry, SegConst, add_t, apply_s, s_matrix};
 use super::{CubicSolveInfo, MAX_ITERATIONS, MAX_RESIDUAL, TARGET_RESIDUAL};
+use crate::banded::{dot, mat_mul, mat_mul_t, mat_t_vec, mat_vec};
 use crate::error::{SolveError, SplineError};
 
 // The solver's small helpers are inlined by force natively, as those of `equations` (the wasm

@@ -4,7 +4,8 @@
 //! Orthonormal tangent frames at the keys, parallel transported along the segments.
 
 use super::Segment;
-use super::equations::{Geometry, apply_s, dot};
+use super::equations::{Geometry, apply_s};
+use crate::banded::dot;
 
 /// Orthonormal tangent frames at the keys, in span coordinates, parallel transported along
 /// the segments from a frame at the first key.

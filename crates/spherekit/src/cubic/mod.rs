@@ -26,7 +26,7 @@
 
 use glam::{DVec3, DVec4};
 
-use crate::ambient::Ambient;
+use crate::ambient::{Ambient, span_basis};
 #[cfg(doc)]
 use crate::curve::Curve;
 use crate::curve::{Jet, Side};
@@ -42,7 +42,9 @@ use crate::{
     sn::SnPoint,
 };
 
-use equations::{Geometry, SegConst, dot, sinc_deriv};
+use crate::banded::dot;
+use crate::math::sinc_deriv;
+use equations::{Geometry, SegConst};
 use fixed::FixedSolver;
 use frames::Frames;
 
@@ -743,31 +745,4 @@ fn check_velocity<P: Manifold>(
         return Ok(key.project_tangent(v));
     };
     Err(SplineError::InvalidEndVelocity { start, reason })
-}
-
-/// An orthonormal basis of the span of `vectors` (modified Gram–Schmidt, twice, on the
-/// normalised vectors; zero vectors are skipped).
-fn span_basis<'a, V: Ambient + 'a>(dim: usize, vectors: impl IntoIterator<Item = &'a V>) -> Vec<V> {
-    let mut basis: Vec<V> = Vec::with_capacity(dim);
-    for p in vectors {
-        if basis.len() == dim {
-            break;
-        }
-        let l = p.length();
-        if l == 0.0 {
-            continue;
-        }
-        let mut v = p.clone() * (1.0 / l);
-        for _ in 0..2 {
-            for b in &basis {
-                let c = b.dot(&v);
-                v = v - b.clone() * c;
-            }
-        }
-        let l = v.length();
-        if l > 1e-13 {
-            basis.push(v * (1.0 / l));
-        }
-    }
-    basis
 }

@@ -1,10 +1,11 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-use super::dynamic::invert;
-use super::equations::{Geometry, SegConst, dot, kappa, mat_mul, norm, sinc_deriv};
+use super::equations::{Geometry, SegConst, norm};
 use super::fixed::{FixedSolver, Vf, invertf, vf};
 use super::*;
+use crate::banded::dot;
+use crate::banded::{invert, mat_mul};
 use crate::recast::keys;
 
 /// The wasm build constructs on S^m and converts back; every field (and every error) must
@@ -60,21 +61,6 @@ fn the_construction_gives_the_same_bits_on_sn() {
     }
     let built = keys::built(check, check);
     assert!(built > 40, "{built} curves built");
-}
-
-#[test]
-fn series_match_closed_forms_at_the_switch() {
-    let dsinc: fn(f64) -> f64 = |x| sinc_deriv(x, math::sin_cos(x));
-    for f in [dsinc, kappa] {
-        // One ulp apart across the switch: the series below, the closed form at 0.1.
-        let below = f(0.1 - 1.5e-17);
-        let above = f(0.1);
-        assert!((below - above).abs() < 1e-15, "{below} vs {above}");
-    }
-    assert!(
-        (kappa(1.0) - (1.0 - 1f64.sin() * 1f64.cos())).abs() < 1e-16,
-        "kappa(1)"
-    );
 }
 
 /// A random system of continuity equations: `n` keys, tangent dimension `m`, segment
