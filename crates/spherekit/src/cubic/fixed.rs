@@ -1,11 +1,12 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! The solver for tangent dimensions 1 to 3, on arrays.
+//! The solver for tangent dimensions 1 to 3, on glam's `DVec3` and `DMat3`.
 
-use super::equations::{Geometry, SegConst, add_t, apply_s, s_matrix};
+use glam::{DMat3, DVec3};
+
+use super::equations::{Geometry, SegConst, add_t, apply_s};
 use super::{CubicSolveInfo, MAX_ITERATIONS, MAX_RESIDUAL, TARGET_RESIDUAL};
-use crate::banded::{dot, mat_mul, mat_mul_t, mat_t_vec, mat_vec};
 use crate::error::{SolveError, SplineError};
 
 // The solver's small helpers are inlined by force natively, as those of `equations` (the wasm
@@ -15,49 +16,37 @@ use crate::error::{SolveError, SplineError};
 /// [`FixedSolver::new`]).
 const M: usize = 3;
 
-/// An M-vector and an M × M block (row-major).
-pub(super) type Vf = [f64; M];
-type Bf = [[f64; M]; M];
+/// A vector and a block of the solver: glam's `DVec3` and `DMat3` (column-major; `b.col(j)[i]`
+/// is the entry in row `i`, column `j`).
+pub(super) type Vf = DVec3;
+type Bf = DMat3;
 
-/// `[f(0), …, f(M − 1)]`, always inlined (`vf` is not, in the solver's
-/// loops, and its call per vector cost more than the arithmetic).
+/// `[f(0), f(1), f(2)]`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 pub(super) fn vf(f: impl Fn(usize) -> f64) -> Vf {
-    let mut out = [0.0; M];
-    for (a, o) in out.iter_mut().enumerate() {
-        *o = f(a);
-    }
-    out
+    DVec3::new(f(0), f(1), f(2))
 }
 
-/// The block `[f(i, j)]`, as [`vf`].
+/// The block with entry `f(i, j)` in row `i`, column `j`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn bf(f: impl Fn(usize, usize) -> f64) -> Bf {
-    let mut out = [[0.0; M]; M];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, o) in row.iter_mut().enumerate() {
-            *o = f(i, j);
-        }
-    }
-    out
+    DMat3::from_cols(vf(|i| f(i, 0)), vf(|i| f(i, 1)), vf(|i| f(i, 2)))
 }
 
 /// The symmetric bilinear form of `T` (`T(u) = B(u, u)`, [`add_t`]):
 /// `B(a, b) = κ(a·b − (a·ê)(b·ê))·ê + (sinc′ θ)·((a·ê)·b + (b·ê)·a − 2(a·ê)(b·ê)·ê)`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn bilinear_t(sc: &SegConst, e: &Vf, a: &Vf, b: &Vf) -> Vf {
-    let (ae, be) = (dot(a, e), dot(b, e));
-    let c1 = sc.kappa * (dot(a, b) - ae * be) - 2.0 * sc.dsinc * ae * be;
+fn bilinear_t(sc: &SegConst, e: Vf, a: Vf, b: Vf) -> Vf {
+    let (ae, be) = (a.dot(e), b.dot(e));
+    let c1 = sc.kappa * (a.dot(b) - ae * be) - 2.0 * sc.dsinc * ae * be;
     vf(|i| c1 * e[i] + sc.dsinc * (ae * b[i] + be * a[i]))
 }
 
 /// `zₖ ← zₖ − l·zₖ₋₁`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
 fn eliminate_with(l: &Bf, k: usize, z: &mut [Vf]) {
-    let t = apply(l, &z[k - 1]);
-    for a in 0..M {
-        z[k][a] -= t[a];
-    }
+    let t = *l * z[k - 1];
+    z[k] -= t;
 }
 
 /// `v[k] = value`, or `v.push(value)` when `k == v.len()`: the first factorisation fills the
@@ -75,8 +64,8 @@ fn put<T>(v: &mut Vec<T>, k: usize, value: T) {
 /// `worst² = max(worst², |f|²/scale²)`, the division only for a row that raises it (infinite
 /// for a non-finite residual).
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn raise_worst(f: &Vf, scale2: f64, worst2: &mut f64) {
-    let fn2 = dot(f, f);
+fn raise_worst(f: Vf, scale2: f64, worst2: &mut f64) {
+    let fn2 = f.dot(f);
     if fn2 > *worst2 * scale2 || !fn2.is_finite() {
         *worst2 = if fn2.is_finite() && scale2 > 0.0 {
             fn2 / scale2
@@ -86,96 +75,72 @@ fn raise_worst(f: &Vf, scale2: f64, worst2: &mut f64) {
     }
 }
 
+/// `S·x` with `S = σ·I + (1 − σ)·ê êᵀ` (pass `1/sinc θ` for `S⁻¹`), [`apply_s`] on a `DVec3`.
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn s_vec(e: Vf, sigma: f64, mut x: Vf) -> Vf {
+    apply_s(e.as_ref(), sigma, x.as_mut());
+    x
+}
+
 /// `scale·S·x` for a block `x`, `S = σ·I + (1 − σ)·ê êᵀ`, without forming `S`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_left(e: &Vf, sigma: f64, scale: f64, x: &Bf) -> Bf {
-    let ex = apply_t(x, e);
-    let (a, b) = (scale * sigma, scale * (1.0 - sigma));
-    bf(|i, j| a * x[i][j] + b * e[i] * ex[j])
+fn s_left(e: Vf, sigma: f64, scale: f64, x: &Bf) -> Bf {
+    let ex = x.transpose() * e;
+    let (a, be) = (scale * sigma, e * (scale * (1.0 - sigma)));
+    DMat3::from_cols(
+        x.x_axis * a + be * ex.x,
+        x.y_axis * a + be * ex.y,
+        x.z_axis * a + be * ex.z,
+    )
 }
 
 /// `scale·x·S` for a block `x`, as [`s_left`].
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_right(x: &Bf, e: &Vf, sigma: f64, scale: f64) -> Bf {
-    let xe: Vf = vf(|i| dot(&x[i], e));
-    let (a, b) = (scale * sigma, scale * (1.0 - sigma));
-    bf(|i, j| a * x[i][j] + b * xe[i] * e[j])
+fn s_right(x: &Bf, e: Vf, sigma: f64, scale: f64) -> Bf {
+    let (a, bxe) = (scale * sigma, (*x * e) * (scale * (1.0 - sigma)));
+    DMat3::from_cols(
+        x.x_axis * a + bxe * e.x,
+        x.y_axis * a + bxe * e.y,
+        x.z_axis * a + bxe * e.z,
+    )
 }
 
-// The block algebra of `equations` on the solver's arrays, flattened (a block is its M × M
-// row-major slice).
-
-/// `scale·(σ·I + (1 − σ)·ê êᵀ)` ([`s_matrix`]).
+/// `scale·(σ·I + (1 − σ)·ê êᵀ)`.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn s_block(e: &Vf, sigma: f64, scale: f64) -> Bf {
-    let mut out = [[0.0; M]; M];
-    s_matrix(e, sigma, scale, out.as_flattened_mut());
-    out
-}
-
-/// `a·b` ([`mat_mul`]).
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mul(a: &Bf, b: &Bf) -> Bf {
-    let mut out = [[0.0; M]; M];
-    mat_mul(
-        M,
-        a.as_flattened(),
-        b.as_flattened(),
-        out.as_flattened_mut(),
-    );
-    out
-}
-
-/// `a·bᵀ` ([`mat_mul_t`]).
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn mul_t(a: &Bf, b: &Bf) -> Bf {
-    let mut out = [[0.0; M]; M];
-    mat_mul_t(
-        M,
-        a.as_flattened(),
-        b.as_flattened(),
-        out.as_flattened_mut(),
-    );
-    out
-}
-
-/// `a·x` ([`mat_vec`]).
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn apply(a: &Bf, x: &Vf) -> Vf {
-    let mut out = [0.0; M];
-    mat_vec(M, a.as_flattened(), x, &mut out);
-    out
-}
-
-/// `aᵀ·x` ([`mat_t_vec`]).
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn apply_t(a: &Bf, x: &Vf) -> Vf {
-    let mut out = [0.0; M];
-    mat_t_vec(M, a.as_flattened(), x, &mut out);
-    out
+fn s_block(e: Vf, sigma: f64, scale: f64) -> Bf {
+    bf(|i, j| {
+        let id = if i == j { sigma } else { 0.0 };
+        scale * (id + (1.0 - sigma) * e[i] * e[j])
+    })
 }
 
 /// `a⁻¹` for the pivot blocks of the Jacobian: the adjugate over the determinant (branch-free,
 /// one division; the blocks are diagonally dominant, and a less accurate inverse would only
 /// slow Newton's convergence, never change the residual it stops at); `None` if singular.
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-pub(super) fn invertf(a: &Bf) -> Option<Bf> {
-    let mut out = [[0.0; M]; M];
+pub(super) fn invertf(m: &Bf) -> Option<Bf> {
+    // The rows of `m`.
+    let a = m.transpose().to_cols_array_2d();
     let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
     let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
     let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
     let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
     let r = 1.0 / det;
-    out[0][0] = c00 * r;
-    out[1][0] = c01 * r;
-    out[2][0] = c02 * r;
-    out[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * r;
-    out[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * r;
-    out[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * r;
-    out[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * r;
-    out[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * r;
-    out[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * r;
-    (det != 0.0 && r.is_finite() && out.iter().flatten().all(|v| v.is_finite())).then_some(out)
+    // Column by column: the adjugate is the transpose of the cofactors.
+    let out = DMat3::from_cols(
+        DVec3::new(c00, c01, c02) * r,
+        DVec3::new(
+            a[0][2] * a[2][1] - a[0][1] * a[2][2],
+            a[0][0] * a[2][2] - a[0][2] * a[2][0],
+            a[0][1] * a[2][0] - a[0][0] * a[2][1],
+        ) * r,
+        DVec3::new(
+            a[0][1] * a[1][2] - a[0][2] * a[1][1],
+            a[0][2] * a[1][0] - a[0][0] * a[1][2],
+            a[0][0] * a[1][1] - a[0][1] * a[1][0],
+        ) * r,
+    );
+    (det != 0.0 && r.is_finite() && out.is_finite()).then_some(out)
 }
 
 /// The solver for tangent dimensions up to 3: the continuity equations of [`Geometry`] with
@@ -249,23 +214,22 @@ impl<'g> FixedSolver<'g> {
         debug_assert!(m <= M, "tangent dimension {m} above {M}");
         let arr = |s: &[f64]| -> Vf { vf(|a| if a < m { s[a] } else { 0.0 }) };
         let e = g.ehat.chunks_exact(m).map(arr).collect();
-        let mut hol = [[0.0; M]; M];
-        if g.closed {
-            for (a, row) in hol.iter_mut().enumerate() {
-                for (b, v) in row.iter_mut().enumerate() {
-                    *v = if a < m && b < m {
-                        g.hol[a * m + b]
-                    } else if a == b {
-                        1.0
-                    } else {
-                        0.0
-                    };
+        let hol = if g.closed {
+            bf(|a, b| {
+                if a < m && b < m {
+                    g.hol[a * m + b]
+                } else if a == b {
+                    1.0
+                } else {
+                    0.0
                 }
-            }
-        }
+            })
+        } else {
+            DMat3::ZERO
+        };
         let fixed = g.fixed.as_ref().map(|(g0, g1)| (arr(g0), arr(g1)));
         let n = g.n;
-        let zero = [[0.0; M]; M];
+        let zero = DMat3::ZERO;
         // The rows are filled in order by the first factorisation ([`put`]).
         Self {
             g,
@@ -292,8 +256,8 @@ impl<'g> FixedSolver<'g> {
 
     /// `Hᵀ·y`.
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn hol_t(&self, y: &Vf) -> Vf {
-        apply_t(&self.hol, y)
+    fn hol_t(&self, y: Vf) -> Vf {
+        self.hol.transpose() * y
     }
 
     /// The block `Aₖ` of a non-fixed row (the coupling to the unknown before; `seam`: the first
@@ -301,58 +265,52 @@ impl<'g> FixedSolver<'g> {
     fn a_block(&self, k: usize, seam: bool) -> Bf {
         let p = if seam { self.g.n - 1 } else { k - 1 };
         let sc = &self.g.seg[p];
-        let s = s_block(&self.e[p], sc.sinc, sc.c2);
-        if seam { mul(&self.hol, &s) } else { s }
+        let s = s_block(self.e[p], sc.sinc, sc.c2);
+        if seam { self.hol * s } else { s }
     }
 
     /// The block `Cₖ` of a non-fixed row (the coupling to the unknown after; `seam`: the last
     /// row of a loop).
     fn c_block(&self, k: usize, seam: bool) -> Bf {
         let sc = &self.g.seg[k];
-        let c = s_block(&self.e[k], sc.inv_sinc, sc.c2);
-        if seam { mul_t(&c, &self.hol) } else { c }
+        let c = s_block(self.e[k], sc.inv_sinc, sc.c2);
+        if seam { c * self.hol.transpose() } else { c }
     }
 
     /// `S⁻¹ H̃ᵀ x_{seg+1}` (the end velocity of segment `seg` in its transported frame; the
     /// holonomy only across the seam).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     fn end_velocity(&self, seg: usize, seam: bool, x: &[Vf]) -> Vf {
-        let mut u = if seam { self.hol_t(&x[0]) } else { x[seg + 1] };
-        apply_s(&self.e[seg], self.g.seg[seg].inv_sinc, &mut u);
-        u
+        let u = if seam { self.hol_t(x[0]) } else { x[seg + 1] };
+        s_vec(self.e[seg], self.g.seg[seg].inv_sinc, u)
     }
 
     /// Row `k` at `x`, given the end velocities of the segments before (`w_prev`) and after
     /// (`w_next`) the key; `first` and `last` say whether `k` is the first or last key (the
     /// callers pass constants, so the interior rows have no branches).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn row(&self, k: usize, first: bool, last: bool, x: &[Vf], w_prev: &Vf, w_next: &Vf) -> Row {
+    fn row(&self, k: usize, first: bool, last: bool, x: &[Vf], w_prev: Vf, w_next: Vf) -> Row {
         let g = self.g;
         let n = g.n;
-        let zero = [[0.0; M]; M];
         let mut row = Row {
-            f: [0.0; M],
+            f: DVec3::ZERO,
             scale2: 0.0,
             lip: 0.0,
             quad: 0.0,
-            d: zero,
+            d: DMat3::ZERO,
         };
-        let xk = &x[k];
+        let xk = x[k];
         if (first || last)
-            && let Some((g0, g1)) = &self.fixed
+            && let Some((g0, g1)) = self.fixed
         {
             let (gk, c4) = if first {
                 (g0, g.seg[0].c4)
             } else {
                 (g1, g.seg[k - 1].c4)
             };
-            for a in 0..M {
-                row.f[a] = c4 * (xk[a] - gk[a]);
-            }
-            row.scale2 = c4 * c4 * (dot(xk, xk) + dot(gk, gk));
-            for i in 0..M {
-                row.d[i][i] = c4;
-            }
+            row.f = (xk - gk) * c4;
+            row.scale2 = c4 * c4 * (xk.dot(xk) + gk.dot(gk));
+            row.d = DMat3::from_diagonal(DVec3::splat(c4));
             return row;
         }
         let mut diag = 0.0;
@@ -360,50 +318,34 @@ impl<'g> FixedSolver<'g> {
         if !first || g.closed {
             let (p, seam) = if first { (n - 1, true) } else { (k - 1, false) };
             let sc = &g.seg[p];
-            let e = &self.e[p];
-            let mut y = x[p];
-            apply_s(e, sc.sinc, &mut y);
-            for ya in &mut y {
-                *ya *= sc.c2;
-            }
-            let lin2 = dot(&y, &y);
-            let t2 = add_t(sc, e, w_prev, &mut y);
-            for (ya, ea) in y.iter_mut().zip(e) {
-                *ya -= sc.c6 * ea;
-            }
-            let y = if seam {
-                vf(|a| dot(&self.hol[a], &y))
-            } else {
-                y
-            };
-            for a in 0..M {
-                row.f[a] += y[a];
-            }
+            let e = self.e[p];
+            let mut y = s_vec(e, sc.sinc, x[p]) * sc.c2;
+            let lin2 = y.dot(y);
+            let t2 = add_t(sc, e.as_ref(), w_prev.as_ref(), y.as_mut());
+            y -= e * sc.c6;
+            row.f += if seam { self.hol * y } else { y };
             row.scale2 += lin2 + t2 + sc.c6 * sc.c6;
             diag += sc.c4;
             // `c₂S·x_{k−1}` moves by at most `c₂ω`; `T(w)` by `|B(W, W + 2w)| ≤ c_B·ω(ω + 2|w|)`
             // (`|B(a, b)| ≤ (|κ| + |sinc′|)·|a||b|`, `W = S⁻¹Δxₖ`, `|Δxₖ| ≤ |W| ≤ ω`).
             let c_b = sc.kappa.abs() + sc.dsinc.abs();
-            row.lip += sc.c2 + 2.0 * c_b * dot(w_prev, w_prev).sqrt();
+            row.lip += sc.c2 + 2.0 * c_b * w_prev.length();
             row.quad = c_b;
             // DT·S⁻¹ at the end velocity `w_prev` (the derivative of T(S⁻¹ H̃ᵀ xₖ)):
             // β·I + ê qᵀ + γ·w⊥ êᵀ with q = α·w⊥ − β·ê.
             let u = w_prev;
-            let up = dot(u, e);
-            let w_perp: Vf = vf(|i| u[i] - up * e[i]);
+            let up = u.dot(e);
+            let w_perp = u - e * up;
             let alpha = 2.0 * sc.inv_sinc * sc.kappa;
             let beta = 2.0 * sc.inv_sinc * sc.dsinc * up;
             let gamma = 2.0 * sc.dsinc;
-            let q: Vf = vf(|j| alpha * w_perp[j] - beta * e[j]);
-            let mut dt = [[0.0; M]; M];
-            for i in 0..M {
-                for j in 0..M {
-                    dt[i][j] = e[i] * q[j] + gamma * w_perp[i] * e[j];
-                }
-                dt[i][i] += beta;
-            }
+            let q = w_perp * alpha - e * beta;
+            let dt = bf(|i, j| {
+                let v = e[i] * q[j] + gamma * w_perp[i] * e[j];
+                if i == j { v + beta } else { v }
+            });
             row.d = if seam {
-                mul_t(&mul(&self.hol, &dt), &self.hol)
+                self.hol * dt * self.hol.transpose()
             } else {
                 dt
             };
@@ -411,22 +353,18 @@ impl<'g> FixedSolver<'g> {
         // The segment after the key (for the last key of a loop, the closing segment).
         if !last || g.closed {
             let sc = &g.seg[k];
-            let e = &self.e[k];
-            for a in 0..M {
-                row.f[a] += sc.c2 * w_next[a] - sc.c6 * e[a];
-            }
-            row.scale2 += sc.c2 * sc.c2 * dot(w_next, w_next) + sc.c6 * sc.c6;
+            let e = self.e[k];
+            row.f += w_next * sc.c2 - e * sc.c6;
+            row.scale2 += sc.c2 * sc.c2 * w_next.dot(w_next) + sc.c6 * sc.c6;
             diag += sc.c4;
             row.lip += sc.c2 * sc.inv_sinc;
         }
         row.lip += diag;
-        for a in 0..M {
-            row.f[a] += diag * xk[a];
-        }
-        row.scale2 += diag * diag * dot(xk, xk);
-        for i in 0..M {
-            row.d[i][i] += diag;
-        }
+        row.f += xk * diag;
+        row.scale2 += diag * diag * xk.dot(xk);
+        row.d.x_axis.x += diag;
+        row.d.y_axis.y += diag;
+        row.d.z_axis.z += diag;
         row
     }
 
@@ -449,9 +387,9 @@ impl<'g> FixedSolver<'g> {
         let mut w_prev = if g.closed {
             self.end_velocity(n - 1, true, x)
         } else {
-            [0.0; M]
+            DVec3::ZERO
         };
-        let mut prev = [0.0; M];
+        let mut prev = DVec3::ZERO;
         if let Some(ul) = ul {
             self.correct(0, x, z, ul, &mut prev);
             self.correct(1, x, z, ul, &mut prev);
@@ -507,11 +445,11 @@ impl<'g> FixedSolver<'g> {
         } else if g.closed {
             self.end_velocity(n - 1, true, x)
         } else {
-            [0.0; M]
+            DVec3::ZERO
         };
-        let row = self.row(k, first, last, x, w_prev, &w_next);
+        let row = self.row(k, first, last, x, *w_prev, w_next);
         *w_prev = w_next;
-        raise_worst(&row.f, row.scale2, worst2);
+        raise_worst(row.f, row.scale2, worst2);
         // (Rows without the nonlinear term are solved exactly by a chord step.)
         if !first || g.closed {
             for (c, max2) in [(row.lip, &mut self.sens2), (row.quad, &mut self.quad2)] {
@@ -525,7 +463,7 @@ impl<'g> FixedSolver<'g> {
             }
         }
         put(&mut self.scale2, k, row.scale2);
-        put(&mut self.dev, k, [0.0; M]);
+        put(&mut self.dev, k, DVec3::ZERO);
         if g.closed && last {
             // The Schur row: kept whole, eliminated in `back`.
             z[k] = row.f;
@@ -540,16 +478,11 @@ impl<'g> FixedSolver<'g> {
         let coupled_prev = !fixed && (!first || g.closed);
         let mut d = row.d;
         let l = if coupled_prev && !first {
-            let (e, sc, prev) = (&self.e[k - 1], &g.seg[k - 1], &self.fac[k - 1]);
-            let t = s_left(e, sc.sinc, sc.c2, &prev.gm);
-            for i in 0..M {
-                for j in 0..M {
-                    d[i][j] -= t[i][j];
-                }
-            }
+            let (e, sc, prev) = (self.e[k - 1], &g.seg[k - 1], &self.fac[k - 1]);
+            d -= s_left(e, sc.sinc, sc.c2, &prev.gm);
             s_left(e, sc.sinc, sc.c2, &prev.dinv)
         } else {
-            [[0.0; M]; M]
+            DMat3::ZERO
         };
         let dinv = invertf(&d).ok_or(Singular)?;
         let merge = g.closed && k + 2 == n;
@@ -557,23 +490,17 @@ impl<'g> FixedSolver<'g> {
             let mut b = if first {
                 self.a_block(k, true)
             } else {
-                let t = mul(&l, &self.border[k - 1]);
-                bf(|i, j| -t[i][j])
+                -(l * self.border[k - 1])
             };
             if merge {
-                let c = self.c_block(k, false);
-                for i in 0..M {
-                    for j in 0..M {
-                        b[i][j] += c[i][j];
-                    }
-                }
+                b += self.c_block(k, false);
             }
             put(&mut self.border, k, b);
         }
         let gm = if fixed || merge || last {
-            [[0.0; M]; M]
+            DMat3::ZERO
         } else {
-            let (e, sc) = (&self.e[k], &g.seg[k]);
+            let (e, sc) = (self.e[k], &g.seg[k]);
             s_right(&dinv, e, sc.inv_sinc, sc.c2)
         };
         // The elimination with the row's own `l` (not read back from `fac`, just stored).
@@ -623,33 +550,24 @@ impl<'g> FixedSolver<'g> {
         } else {
             // No nonlinear term: `dev` keeps the deviation of the unknown itself (for `dev2`).
             let w = &mut self.dev[0];
-            for i in 0..M {
-                w[i] -= d[i];
-            }
-            self.dev2 = self.dev2.max(dot(w, w));
-            return [0.0; M];
+            *w -= *d;
+            self.dev2 = self.dev2.max(w.dot(*w));
+            return DVec3::ZERO;
         };
         if self.fixed.is_some() && k + 1 == g.n {
-            return [0.0; M];
+            return DVec3::ZERO;
         }
-        let mut s = if seam { self.hol_t(d) } else { *d };
-        let (sc, e) = (&g.seg[p], &self.e[p]);
-        apply_s(e, sc.inv_sinc, &mut s);
+        let (sc, e) = (&g.seg[p], self.e[p]);
+        let s = s_vec(e, sc.inv_sinc, if seam { self.hol_t(*d) } else { *d });
         let w = &mut self.dev[k];
-        let a: Vf = vf(|i| s[i] - 2.0 * w[i]);
-        for i in 0..M {
-            w[i] -= s[i];
-        }
-        let w2 = dot(w, w);
+        let a = s - *w * 2.0;
+        *w -= s;
+        let w2 = w.dot(*w);
         if w2 > self.dev2 {
             self.dev2 = w2;
         }
-        let f = bilinear_t(sc, e, &a, &s);
-        if seam {
-            vf(|i| dot(&self.hol[i], &f))
-        } else {
-            f
-        }
+        let f = bilinear_t(sc, e, a, s);
+        if seam { self.hol * f } else { f }
     }
 
     /// The first step of an open curve, `x ← −J(0)⁻¹F(0)`, from `x = 0`; returns the relative
@@ -675,12 +593,12 @@ impl<'g> FixedSolver<'g> {
     ) -> f64 {
         let g = self.g;
         let n = g.n;
-        let fixed = self.fixed.as_ref();
+        let fixed = self.fixed;
         let mut worst2 = 0.0_f64;
-        let mut z_prev = [0.0; M];
+        let mut z_prev = DVec3::ZERO;
         let mut inv_prev = 1.0;
         for k in 0..n {
-            let mut f = [0.0; M];
+            let mut f = DVec3::ZERO;
             let mut scale2 = 0.0;
             let mut d = 0.0;
             let mut z;
@@ -691,10 +609,8 @@ impl<'g> FixedSolver<'g> {
                     } else {
                         (g1, g.seg[k - 1].c4)
                     };
-                    for a in 0..M {
-                        f[a] = -c4 * gk[a];
-                    }
-                    scale2 = c4 * c4 * dot(gk, gk);
+                    f = gk * -c4;
+                    scale2 = c4 * c4 * gk.dot(gk);
                     d = c4;
                     ul[k] = d;
                     z = f;
@@ -705,9 +621,7 @@ impl<'g> FixedSolver<'g> {
                         .flatten()
                     {
                         let sc = &g.seg[seg];
-                        for (fa, ea) in f.iter_mut().zip(&self.e[seg]) {
-                            *fa -= sc.c6 * ea;
-                        }
+                        f -= self.e[seg] * sc.c6;
                         scale2 += sc.c6 * sc.c6;
                         d += sc.c4;
                     }
@@ -715,19 +629,16 @@ impl<'g> FixedSolver<'g> {
                     ul[k] = d;
                     if k > 0 {
                         let sc = &g.seg[k - 1];
-                        let mut az = z_prev;
-                        apply_s(&self.e[k - 1], sc.sinc, &mut az);
+                        let az = s_vec(self.e[k - 1], sc.sinc, z_prev);
                         let c = sc.c2 * inv_prev;
-                        for a in 0..M {
-                            z[a] -= c * az[a];
-                        }
+                        z -= az * c;
                         if fixed.is_none() || k > 1 {
                             d -= sc.c2 * c;
                         }
                     }
                 }
             }
-            let fn2 = dot(&f, &f);
+            let fn2 = f.dot(f);
             if fn2 > worst2 * scale2 || !fn2.is_finite() {
                 worst2 = if fn2.is_finite() && scale2 > 0.0 {
                     fn2 / scale2
@@ -741,12 +652,12 @@ impl<'g> FixedSolver<'g> {
             z_prev = z;
             inv_prev = inv;
         }
-        let mut next: Vf = vf(|a| x[n - 1][a] * piv[n - 1]);
-        x[n - 1] = vf(|a| -next[a]);
+        let mut next = x[n - 1] * piv[n - 1];
+        x[n - 1] = -next;
         // The correction's right-hand side `T(wₖ)` (the residual at the new x) and its
         // elimination from the last row up, as each `xₖ` comes out (see `correct`).
         let is_fixed = |k: usize| fixed.is_some() && (k == 0 || k + 1 == n);
-        let mut zeta = self.tee(n - 1, &x[n - 1]);
+        let mut zeta = self.tee(n - 1, x[n - 1]);
         let mut pi = ul[n - 1];
         z[n - 1] = zeta;
         ul[n - 1] = 1.0 / pi;
@@ -755,23 +666,17 @@ impl<'g> FixedSolver<'g> {
             let coupled_next = fixed.is_none() || k > 0;
             if coupled_next {
                 let sc = &g.seg[k];
-                let mut c = next;
-                apply_s(&self.e[k], sc.inv_sinc, &mut c);
-                for a in 0..M {
-                    t[a] -= sc.c2 * c[a];
-                }
+                t -= s_vec(self.e[k], sc.inv_sinc, next) * sc.c2;
             }
-            next = vf(|a| t[a] * piv[k]);
-            x[k] = vf(|a| -next[a]);
-            let mut r = self.tee(k, &x[k]);
+            next = t * piv[k];
+            x[k] = -next;
+            let mut r = self.tee(k, x[k]);
             let mut d = ul[k];
             if coupled_next {
                 let sc = &g.seg[k];
                 let c = sc.c2 * ul[k + 1];
-                apply_s(&self.e[k], sc.inv_sinc, &mut zeta);
-                for a in 0..M {
-                    r[a] -= c * zeta[a];
-                }
+                zeta = s_vec(self.e[k], sc.inv_sinc, zeta);
+                r -= zeta * c;
                 if !is_fixed(k + 1) {
                     d -= sc.c2 * c;
                 }
@@ -787,13 +692,12 @@ impl<'g> FixedSolver<'g> {
     /// The nonlinear term `T(wₖ)` of row `k` of an open curve at `xₖ` (0 for the rows without
     /// it: the first and the fixed ones).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn tee(&self, k: usize, xk: &Vf) -> Vf {
-        let mut f = [0.0; M];
+    fn tee(&self, k: usize, xk: Vf) -> Vf {
+        let mut f = DVec3::ZERO;
         if k > 0 && !(self.fixed.is_some() && k + 1 == self.g.n) {
-            let (sc, e) = (&self.g.seg[k - 1], &self.e[k - 1]);
-            let mut w = *xk;
-            apply_s(e, sc.inv_sinc, &mut w);
-            add_t(sc, e, &w, &mut f);
+            let (sc, e) = (&self.g.seg[k - 1], self.e[k - 1]);
+            let w = s_vec(e, sc.inv_sinc, xk);
+            add_t(sc, e.as_ref(), w.as_ref(), f.as_mut());
         }
         f
     }
@@ -811,42 +715,27 @@ impl<'g> FixedSolver<'g> {
         let mut t = z[k];
         if k > 0 && !(self.fixed.is_some() && k + 1 == g.n) {
             let sc = &g.seg[k - 1];
-            apply_s(&self.e[k - 1], sc.sinc, prev);
-            for a in 0..M {
-                t[a] -= sc.c2 * prev[a];
-            }
+            *prev = s_vec(self.e[k - 1], sc.sinc, *prev);
+            t -= *prev * sc.c2;
         }
-        *prev = vf(|a| t[a] * ul[k]);
-        for a in 0..M {
-            x[k][a] -= prev[a];
-        }
+        *prev = t * ul[k];
+        x[k] -= *prev;
     }
 
     /// Closed: `Zₖ` from the eliminated border column, and the inverse Schur complement.
     fn finish_border(&mut self) -> Result<(), Singular> {
         let n = self.g.n;
         let rows = n - 1;
-        let mut next = mul(&self.fac[rows - 1].dinv, &self.border[rows - 1]);
+        let mut next = self.fac[rows - 1].dinv * self.border[rows - 1];
         self.border[rows - 1] = next;
         for k in (0..rows - 1).rev() {
-            let mut zk = mul(&self.fac[k].dinv, &self.border[k]);
-            let t = mul(&self.fac[k].gm, &next);
-            for i in 0..M {
-                for j in 0..M {
-                    zk[i][j] -= t[i][j];
-                }
-            }
+            let zk = self.fac[k].dinv * self.border[k] - self.fac[k].gm * next;
             self.border[k] = zk;
             next = zk;
         }
-        let t1 = mul(&self.a_last, &self.border[n - 2]);
-        let t2 = mul(&self.c_last, &self.border[0]);
-        let mut s = self.d_last;
-        for i in 0..M {
-            for j in 0..M {
-                s[i][j] -= t1[i][j] + t2[i][j];
-            }
-        }
+        let t1 = self.a_last * self.border[n - 2];
+        let t2 = self.c_last * self.border[0];
+        let s = self.d_last - (t1 + t2);
         self.schur_inv = invertf(&s).ok_or(Singular)?;
         Ok(())
     }
@@ -873,57 +762,39 @@ impl<'g> FixedSolver<'g> {
         let n = self.g.n;
         let mut worst2 = 0.0_f64;
         if !self.g.closed {
-            let mut next = apply(&self.fac[n - 1].dinv, &z[n - 1]);
-            for a in 0..M {
-                x[n - 1][a] -= next[a];
-            }
+            let mut next = self.fac[n - 1].dinv * z[n - 1];
+            x[n - 1] -= next;
             z[n - 1] = self.update(n - 1, &next);
-            raise_worst(&z[n - 1], self.scale2[n - 1], &mut worst2);
+            raise_worst(z[n - 1], self.scale2[n - 1], &mut worst2);
             for k in (0..n - 1).rev() {
                 let f = &self.fac[k];
-                let y = apply(&f.dinv, &z[k]);
-                let t = apply(&f.gm, &next);
-                let d: Vf = vf(|a| y[a] - t[a]);
-                for a in 0..M {
-                    x[k][a] -= d[a];
-                }
+                let d = f.dinv * z[k] - f.gm * next;
+                x[k] -= d;
                 z[k] = self.update(k, &d);
-                raise_worst(&z[k], self.scale2[k], &mut worst2);
+                raise_worst(z[k], self.scale2[k], &mut worst2);
                 next = d;
             }
             return worst2.sqrt();
         }
         let rows = n - 1;
-        let mut next = apply(&self.fac[rows - 1].dinv, &z[rows - 1]);
+        let mut next = self.fac[rows - 1].dinv * z[rows - 1];
         z[rows - 1] = next;
         for k in (0..rows - 1).rev() {
             let f = &self.fac[k];
-            let y = apply(&f.dinv, &z[k]);
-            let t = apply(&f.gm, &next);
-            next = vf(|a| y[a] - t[a]);
+            next = f.dinv * z[k] - f.gm * next;
             z[k] = next;
         }
-        let mut rhs = z[n - 1];
-        let t1 = apply(&self.a_last, &z[n - 2]);
-        let t2 = apply(&self.c_last, &z[0]);
-        for a in 0..M {
-            rhs[a] -= t1[a] + t2[a];
-        }
-        let last = apply(&self.schur_inv, &rhs);
+        let rhs = z[n - 1] - (self.a_last * z[n - 2] + self.c_last * z[0]);
+        let last = self.schur_inv * rhs;
         for k in 0..rows {
-            let t = apply(&self.border[k], &last);
-            let d: Vf = vf(|a| z[k][a] - t[a]);
-            for a in 0..M {
-                x[k][a] -= d[a];
-            }
+            let d = z[k] - self.border[k] * last;
+            x[k] -= d;
             z[k] = self.update(k, &d);
-            raise_worst(&z[k], self.scale2[k], &mut worst2);
+            raise_worst(z[k], self.scale2[k], &mut worst2);
         }
-        for a in 0..M {
-            x[n - 1][a] -= last[a];
-        }
+        x[n - 1] -= last;
         z[n - 1] = self.update(n - 1, &last);
-        raise_worst(&z[n - 1], self.scale2[n - 1], &mut worst2);
+        raise_worst(z[n - 1], self.scale2[n - 1], &mut worst2);
         worst2.sqrt()
     }
 
@@ -937,8 +808,8 @@ impl<'g> FixedSolver<'g> {
 
     fn run(&mut self, correct: bool) -> Result<(Vec<f64>, CubicSolveInfo), SplineError> {
         let n = self.g.n;
-        let mut x = vec![[0.0; M]; n];
-        let mut z = vec![[0.0; M]; n];
+        let mut x = vec![DVec3::ZERO; n];
+        let mut z = vec![DVec3::ZERO; n];
         let fail = |info: CubicSolveInfo| {
             SplineError::Solve(SolveError::NoConvergence {
                 iterations: info.iterations,
@@ -969,7 +840,7 @@ impl<'g> FixedSolver<'g> {
                 }
                 residual = new;
             } else {
-                x.fill([0.0; M]);
+                x.fill(DVec3::ZERO);
             }
         }
         info.residual = residual;
@@ -1017,7 +888,7 @@ impl<'g> FixedSolver<'g> {
         info.residual = residual;
         let flat: Vec<f64> = x
             .iter()
-            .flat_map(|v| v[..self.g.m].iter().copied())
+            .flat_map(|v| v.to_array().into_iter().take(self.g.m))
             .collect();
         if residual.is_nan() || residual > MAX_RESIDUAL || flat.iter().any(|v| !v.is_finite()) {
             return Err(fail(info));

@@ -7,6 +7,7 @@ use super::*;
 use crate::banded::dot;
 use crate::banded::{invert, mat_mul};
 use crate::recast::keys;
+use glam::DMat3;
 
 /// The wasm build constructs on S^m and converts back; every field (and every error) must
 /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
@@ -140,7 +141,7 @@ fn chord_residual_updates_equal_the_evaluated_residual() {
             .chunks_exact(m)
             .map(|c| vf(|a| if a < m { c[a] } else { 0.0 }))
             .collect();
-        let mut z = vec![[0.0; 3]; n];
+        let mut z = vec![Vf::ZERO; n];
         let evaluated = FixedSolver::new(&geo)
             .sweep(&mut xv.clone(), &mut z, None)
             .unwrap_or(f64::INFINITY);
@@ -183,7 +184,7 @@ fn the_correction_brings_the_first_iterate_closer() {
         let geo = random_geometry(100 + case as u64, n, m, false, fixed);
         let residual_at = |correct: bool| {
             let mut solver = FixedSolver::new(&geo);
-            let (mut x, mut z) = (vec![[0.0; 3]; n], vec![[0.0; 3]; n]);
+            let (mut x, mut z) = (vec![Vf::ZERO; n], vec![Vf::ZERO; n]);
             let (mut piv, mut ul) = (vec![0.0; n], vec![0.0; n]);
             solver.linear_step(&mut x, &mut piv, &mut z, &mut ul);
             let ul = correct.then_some(&ul[..]);
@@ -214,16 +215,18 @@ fn invert_roundtrip() {
     let mut id = [0.0; 9];
     mat_mul(3, &a, &inv, &mut id);
     // The fixed solver's adjugate inverse agrees to rounding, and refuses singular blocks.
+    // (`from_cols_array_2d` reads columns: the transpose of the rows is the block.)
+    let block = |rows: [[f64; 3]; 3]| DMat3::from_cols_array_2d(&rows).transpose();
     let rows = [[a[0], a[1], a[2]], [a[3], a[4], a[5]], [a[6], a[7], a[8]]];
-    let adj = invertf(&rows).expect("invertible");
-    for (x, y) in adj.concat().iter().zip(&inv) {
+    let adj = invertf(&block(rows)).expect("invertible");
+    for (x, y) in adj.transpose().to_cols_array().iter().zip(&inv) {
         assert!((x - y).abs() < 1e-15, "adjugate {x} vs {y}");
     }
     assert!(
-        invertf(&[[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 0.0, 1.0]]).is_none(),
+        invertf(&block([[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 0.0, 1.0]])).is_none(),
         "singular, rank 2"
     );
-    assert!(invertf(&[[0.0; 3]; 3]).is_none(), "zero block");
+    assert!(invertf(&DMat3::ZERO).is_none(), "zero block");
     for i in 0..3 {
         for j in 0..3 {
             let e = if i == j { 1.0 } else { 0.0 };
