@@ -16,7 +16,8 @@
 //!
 //! A **closed** loop has the unknowns `d₀ … d_{m−1}` and the rows `i = 0 … m−1` with indices
 //! mod m (row 0 involves `d_{m−1}`, row m−1 involves `d₀`): the Jacobian is block cyclic
-//! tridiagonal, solved by bordering ([`block_cyclic_solve`]) in O(m) as well.
+//! tridiagonal, solved by bordering in O(m) as well (both factorised by
+//! [`BlockTridiagonal`](crate::banded::BlockTridiagonal)).
 //!
 //! The kernel computes in coordinates of an orthonormal basis of the span of the data (of
 //! dimension `r ≤ m + 1`): every slerp keeps its result in the span of its inputs, and a
