@@ -116,6 +116,9 @@ fn spline_message(e: &SplineError) -> String {
             "params.{}_velocity: {e}",
             if *start { "start" } else { "end" }
         ),
+        SplineError::InvalidKeyVelocity { index, reason } => {
+            format!("params.velocities[{index}]: {reason}")
+        }
         SplineError::AntipodalClosing | SplineError::CoincidentClosing => format!("closed: {e}"),
         SplineError::NoCircleAround {
             first,

@@ -208,6 +208,14 @@ pub enum SplineError {
         /// What is wrong, for example `"is not tangent to the first key"`.
         reason: &'static str,
     },
+    /// A given key velocity ([`CubicSpline::try_hermite`](crate::CubicSpline::try_hermite))
+    /// cannot be used.
+    InvalidKeyVelocity {
+        /// Index of the key (and of its velocity).
+        index: usize,
+        /// What is wrong, for example `"is not tangent to its key"`.
+        reason: &'static str,
+    },
     /// The ambient (unnormalised) curve of the segment that starts at point `index` may pass
     /// through the origin, where normalising it has no direction
     /// ([`CatmullRomNlerp`](crate::CatmullRomNlerp): keys about a half turn apart or more).
@@ -314,6 +322,9 @@ impl fmt::Display for SplineError {
             Self::InvalidEndVelocity { start, reason } => {
                 let which = if *start { "start" } else { "end" };
                 write!(f, "the {which} velocity {reason}")
+            }
+            Self::InvalidKeyVelocity { index, reason } => {
+                write!(f, "the velocity at point {index} {reason}")
             }
             Self::ThroughOrigin { index, next } => write!(
                 f,

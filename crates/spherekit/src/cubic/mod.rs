@@ -280,7 +280,71 @@ impl<P: Manifold> CubicSpline<P> {
         #[cfg(not(target_arch = "wasm32"))]
         return Self::construct(points, knots, end, closed);
         #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, knots, end, closed);
+        return Self::construct_on_sn(points, knots, end, closed, None);
+    }
+
+    /// The cubic Hermite spline on the sphere: through `points` at the times `knots` (as
+    /// [`try_new`](Self::try_new)) with the given velocity at every key, an ambient tangent
+    /// vector per unit of time (closed: the first key's velocity also at the end of the loop).
+    ///
+    /// Each segment is the one of [`try_new`](Self::try_new), `c(t) = Exp_{pᵢ}(vᵢ(t − tᵢ))` with
+    /// `vᵢ` the cubic in the tangent space at `pᵢ` with `vᵢ(0) = 0`, `vᵢ′(0) = Vᵢ`,
+    /// `vᵢ(hᵢ) = Log_{pᵢ}(pᵢ₊₁)` and `vᵢ′(hᵢ) = (dExp)⁻¹Vᵢ₊₁`, so the curve passes through every
+    /// key at its time with the given velocity: C¹, with no system to solve
+    /// ([`solve_info`](Self::solve_info) reports 0 iterations). The C² spline of
+    /// [`try_new`](Self::try_new) is the one whose velocities make the acceleration continuous
+    /// too. On S³, angular velocities (a gyroscope's rates) become key velocities with
+    /// [`velocity_from_angular_body`](crate::velocity_from_angular_body) or
+    /// [`velocity_from_angular`](crate::velocity_from_angular).
+    ///
+    /// An open curve's [`end`](Self::end) is [`CubicEnd::Clamped`] with the first and last
+    /// velocities (which it is); a closed one's is [`CubicEnd::Natural`].
+    ///
+    /// # Errors
+    ///
+    /// As [`try_new`](Self::try_new) for the keys and knots, and
+    /// - [`SplineError::InvalidParameter`] (`velocities`) unless there is one velocity per key;
+    /// - [`SplineError::InvalidKeyVelocity`] for a velocity that is not finite, has the wrong
+    ///   dimension or is not tangent at its key (`|p·v| > 1e-9·|v|`; one within that tolerance is
+    ///   projected onto the tangent space).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::glam::DVec3;
+    /// use spherekit::{Curve, CubicSpline, UnitQuat, angular_velocity_acceleration_body,
+    ///     velocity_from_angular_body};
+    ///
+    /// // Three attitudes with the body rates a gyroscope measured there.
+    /// let keys = vec![
+    ///     UnitQuat::IDENTITY,
+    ///     UnitQuat::from_rotation_vector(DVec3::new(0.0, 0.0, 0.8)).unwrap(),
+    ///     UnitQuat::from_rotation_vector(DVec3::new(0.3, 0.0, 1.5)).unwrap(),
+    /// ];
+    /// let rates = [DVec3::new(0.0, 0.0, 0.9), DVec3::new(0.2, 0.0, 0.7), DVec3::new(0.4, 0.1, 0.6)];
+    /// let velocities = keys.iter().zip(rates).map(|(q, w)| velocity_from_angular_body(*q, w)).collect();
+    /// let c = CubicSpline::try_hermite(keys, velocities, Some(vec![0.0, 1.0, 2.0]), false).unwrap();
+    /// let j = c.jet(1.0);
+    /// let (omega, _) = angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration);
+    /// assert!((omega - rates[1]).length() < 1e-12);
+    /// ```
+    pub fn try_hermite(
+        points: Vec<P>,
+        velocities: Vec<P::Vector>,
+        knots: Option<Vec<f64>>,
+        closed: bool,
+    ) -> Result<Self, SplineError> {
+        let end = match (closed, velocities.first(), velocities.last()) {
+            (false, Some(start), Some(end)) => CubicEnd::Clamped {
+                start: start.clone(),
+                end: end.clone(),
+            },
+            _ => CubicEnd::Natural,
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        return Self::construct_given(points, knots, end, closed, Some(velocities));
+        #[cfg(target_arch = "wasm32")]
+        return Self::construct_on_sn(points, knots, end, closed, Some(velocities));
     }
 
     /// [`construct`](Self::construct) on the keys as points of S^m, the built curve converted
@@ -292,9 +356,11 @@ impl<P: Manifold> CubicSpline<P> {
         knots: Option<Vec<f64>>,
         end: CubicEnd<P::Vector>,
         closed: bool,
+        given: Option<Vec<P::Vector>>,
     ) -> Result<Self, SplineError> {
         let sn = points.iter().map(to_sn).collect();
         let vector = |v: &P::Vector| VecN::new(v.to_vec());
+        let given = given.map(|g| g.iter().map(vector).collect());
         let end_sn = match &end {
             CubicEnd::Natural => CubicEnd::Natural,
             CubicEnd::Scipy => CubicEnd::Scipy,
@@ -303,7 +369,7 @@ impl<P: Manifold> CubicSpline<P> {
                 end: vector(end),
             },
         };
-        let c = CubicSpline::<SnPoint>::construct(sn, knots, end_sn, closed)?;
+        let c = CubicSpline::<SnPoint>::construct_given(sn, knots, end_sn, closed, given)?;
         let to = Recast::to(&points[0]);
         Ok(Self {
             points,
@@ -332,6 +398,18 @@ impl<P: Manifold> CubicSpline<P> {
         knots: Option<Vec<f64>>,
         end: CubicEnd<P::Vector>,
         closed: bool,
+    ) -> Result<Self, SplineError> {
+        Self::construct_given(points, knots, end, closed, None)
+    }
+
+    /// [`construct`](Self::construct), with the velocity at every key `given`
+    /// ([`try_hermite`](Self::try_hermite): no solve).
+    fn construct_given(
+        points: Vec<P>,
+        knots: Option<Vec<f64>>,
+        end: CubicEnd<P::Vector>,
+        closed: bool,
+        given: Option<Vec<P::Vector>>,
     ) -> Result<Self, SplineError> {
         let n = points.len();
         let min = if closed { 3 } else { 2 };
@@ -373,6 +451,29 @@ impl<P: Manifold> CubicSpline<P> {
                     .into(),
             });
         }
+        let given = match given {
+            Some(velocities) if velocities.len() != n => {
+                return Err(SplineError::InvalidParameter {
+                    name: "velocities",
+                    reason: format!(
+                        "must have one velocity per key: {n} keys, got {}",
+                        velocities.len()
+                    ),
+                });
+            }
+            Some(velocities) => Some(
+                velocities
+                    .iter()
+                    .zip(&points)
+                    .enumerate()
+                    .map(|(index, (v, key))| {
+                        tangent_at(key, v)
+                            .map_err(|reason| SplineError::InvalidKeyVelocity { index, reason })
+                    })
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+            None => None,
+        };
         let clamps = match &end {
             CubicEnd::Clamped { start, end } => Some((
                 check_velocity(&points[0], start, true)?,
@@ -385,7 +486,11 @@ impl<P: Manifold> CubicSpline<P> {
         // coordinates when the keys span the whole space (as keys on S³ in general position do).
         let vectors: Vec<P::Vector> = points.iter().map(Manifold::to_vector).collect();
         let clamp_vectors = clamps.iter().flat_map(|(s, e)| [s, e]);
-        let basis = span_basis(dim, vectors.iter().chain(clamp_vectors));
+        let given_vectors = given.iter().flatten();
+        let basis = span_basis(
+            dim,
+            vectors.iter().chain(clamp_vectors).chain(given_vectors),
+        );
         let r = basis.len();
         let whole = r == dim;
         let coords = |v: &P::Vector, out: &mut Vec<f64>| {
@@ -443,7 +548,25 @@ impl<P: Manifold> CubicSpline<P> {
                 }
             }
         }
-        let (x, info) = if m == 0 {
+        let (x, info) = if let Some(velocities) = &given {
+            // Hermite: the unknowns of the solve, the key velocities in frame coordinates, are
+            // given.
+            let mut x = Vec::with_capacity(n * m);
+            let mut vc = Vec::with_capacity(r);
+            for (k, v) in velocities.iter().enumerate() {
+                vc.clear();
+                coords(v, &mut vc);
+                x.extend((0..m).map(|a| dot(frames.vector(k, a), &vc)));
+            }
+            (
+                x,
+                CubicSolveInfo {
+                    iterations: 0,
+                    factorizations: 0,
+                    residual: 0.0,
+                },
+            )
+        } else if m == 0 {
             (
                 Vec::new(),
                 CubicSolveInfo {
@@ -724,25 +847,32 @@ struct Local<P: Manifold> {
     sin_cos: (f64, f64),
 }
 
+/// Checks a velocity at `key` and returns its tangent projection, or what is wrong with it.
+fn tangent_at<P: Manifold>(key: &P, v: &P::Vector) -> Result<P::Vector, &'static str> {
+    let p = key.to_vector();
+    if v.dim() != p.dim() {
+        Err("has the wrong number of coordinates")
+    } else if !v.is_finite() {
+        Err("has a non-finite coordinate")
+    } else if p.dot(v).abs() > TANGENT_TOLERANCE * v.length() {
+        Err("is not tangent to its key")
+    } else {
+        Ok(key.project_tangent(v))
+    }
+}
+
 /// Checks a clamped velocity at `key` and returns its tangent projection.
 fn check_velocity<P: Manifold>(
     key: &P,
     v: &P::Vector,
     start: bool,
 ) -> Result<P::Vector, SplineError> {
-    let p = key.to_vector();
-    let reason = if v.dim() != p.dim() {
-        "has the wrong number of coordinates"
-    } else if !v.is_finite() {
-        "has a non-finite coordinate"
-    } else if p.dot(v).abs() > TANGENT_TOLERANCE * v.length() {
-        if start {
-            "is not tangent to the first key"
-        } else {
-            "is not tangent to the last key"
-        }
-    } else {
-        return Ok(key.project_tangent(v));
-    };
-    Err(SplineError::InvalidEndVelocity { start, reason })
+    tangent_at(key, v).map_err(|reason| {
+        let reason = match (reason, start) {
+            ("is not tangent to its key", true) => "is not tangent to the first key",
+            ("is not tangent to its key", false) => "is not tangent to the last key",
+            (reason, _) => reason,
+        };
+        SplineError::InvalidEndVelocity { start, reason }
+    })
 }

@@ -53,6 +53,7 @@ fn the_construction_gives_the_same_bits_on_sn() {
                         knots.clone(),
                         end.clone(),
                         closed,
+                        None,
                     );
                     built += keys::same_bits(&native, &on_sn, &points);
                 }

@@ -20,6 +20,7 @@ mod cubic;
 mod extrapolate;
 mod gamma_spline;
 mod geodesic;
+mod hermite;
 mod hostile_inputs;
 mod kim;
 mod long_sequences;
