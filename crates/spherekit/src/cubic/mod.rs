@@ -278,7 +278,7 @@ impl<P: Manifold> CubicSpline<P> {
         // Natively on `P` itself; in the wasm build once on S^m for every point type
         // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
         #[cfg(not(target_arch = "wasm32"))]
-        return Self::construct(points, knots, end, closed);
+        return Self::construct(points, knots, end, closed, None);
         #[cfg(target_arch = "wasm32")]
         return Self::construct_on_sn(points, knots, end, closed, None);
     }
@@ -342,7 +342,7 @@ impl<P: Manifold> CubicSpline<P> {
             _ => CubicEnd::Natural,
         };
         #[cfg(not(target_arch = "wasm32"))]
-        return Self::construct_given(points, knots, end, closed, Some(velocities));
+        return Self::construct(points, knots, end, closed, Some(velocities));
         #[cfg(target_arch = "wasm32")]
         return Self::construct_on_sn(points, knots, end, closed, Some(velocities));
     }
@@ -369,7 +369,7 @@ impl<P: Manifold> CubicSpline<P> {
                 end: vector(end),
             },
         };
-        let c = CubicSpline::<SnPoint>::construct_given(sn, knots, end_sn, closed, given)?;
+        let c = CubicSpline::<SnPoint>::construct(sn, knots, end_sn, closed, given)?;
         let to = Recast::to(&points[0]);
         Ok(Self {
             points,
@@ -392,19 +392,9 @@ impl<P: Manifold> CubicSpline<P> {
         })
     }
 
-    /// The construction of [`try_new`](Self::try_new) on `P`.
+    /// The construction of [`try_new`](Self::try_new) on `P`, or with the velocity at every key
+    /// `given`, of [`try_hermite`](Self::try_hermite) (no solve).
     fn construct(
-        points: Vec<P>,
-        knots: Option<Vec<f64>>,
-        end: CubicEnd<P::Vector>,
-        closed: bool,
-    ) -> Result<Self, SplineError> {
-        Self::construct_given(points, knots, end, closed, None)
-    }
-
-    /// [`construct`](Self::construct), with the velocity at every key `given`
-    /// ([`try_hermite`](Self::try_hermite): no solve).
-    fn construct_given(
         points: Vec<P>,
         knots: Option<Vec<f64>>,
         end: CubicEnd<P::Vector>,

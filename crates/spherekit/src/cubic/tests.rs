@@ -46,8 +46,13 @@ fn the_construction_gives_the_same_bits_on_sn() {
                 .collect();
             for knots in [None, Some(uneven)] {
                 for end in &ends {
-                    let native =
-                        CubicSpline::construct(points.to_vec(), knots.clone(), end.clone(), closed);
+                    let native = CubicSpline::construct(
+                        points.to_vec(),
+                        knots.clone(),
+                        end.clone(),
+                        closed,
+                        None,
+                    );
                     let on_sn = CubicSpline::construct_on_sn(
                         points.to_vec(),
                         knots.clone(),

@@ -42,7 +42,10 @@ fn check<P: Manifold>(keys: Vec<P>, vel: Vec<P::Vector>, knots: Vec<f64>, closed
             let dp = (j.point.to_vector() - key.to_vector()).length();
             let dv = (j.velocity.clone() - v.clone()).length();
             assert!(dp < 1e-12, "key {k} ({side:?}): |c − p| = {dp:e}");
-            assert!(dv < 1e-12 * v.length().max(1.0), "key {k} ({side:?}): |c′ − V| = {dv:e}");
+            assert!(
+                dv < 1e-12 * v.length().max(1.0),
+                "key {k} ({side:?}): |c′ − V| = {dv:e}"
+            );
         }
     }
     for joint in continuity(&c) {
@@ -136,7 +139,13 @@ fn hermite_bad_velocities_name_the_key() {
     let mut vel = velocities(&mut rng, &keys, 1.0);
     let err = CubicSpline::try_hermite(keys.clone(), vel[..3].to_vec(), None, false).unwrap_err();
     assert!(
-        matches!(err, SplineError::InvalidParameter { name: "velocities", .. }),
+        matches!(
+            err,
+            SplineError::InvalidParameter {
+                name: "velocities",
+                ..
+            }
+        ),
         "{err}"
     );
     assert!(err.to_string().contains("4 keys, got 3"), "{err}");
