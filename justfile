@@ -10,7 +10,7 @@ demo:
     cargo run --quiet --release -p spherekit-cli --bin spherekit -- sample examples/orientations.json --deriv
 
 # Everything CI runs, fast checks first
-test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e test-package test-python
+test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e test-package test-python test-wheel
 
 # Formatting
 fmt-check:
@@ -43,9 +43,16 @@ corpus:
 unit:
     cargo test --workspace --all-features --locked
 
-# The Python module: build it into .tools/pyvenv (pinned numpy, scipy, numpy-quaternion, pytest from PyPI) and run its pytest suite
+# The Python module: build it into .tools/pyvenv (the pins of python/test-requirements.txt from
+# PyPI) and run its pytest suite and the examples of docs/python.md
 test-python:
-    bash scripts/setup-python.sh python -m pytest -q python/tests
+    MPLBACKEND=Agg bash scripts/setup-python.sh python -m pytest -q -c python/pyproject.toml --rootdir python
+
+# The Python wheel as installed: `maturin build --release` (abi3), pip into a fresh venv, the
+# pytest suite and docs/python.md run against the installed package from outside the source tree
+test-wheel:
+    bash scripts/setup-python.sh
+    bash scripts/test-wheel.sh
 
 # Time the Python module against scipy in one run (see BENCHMARKS.md, section 7)
 bench-python:

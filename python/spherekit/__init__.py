@@ -27,7 +27,8 @@ one-line message (the CLI's for scenes).
 (2, 3)
 """
 
-from ._spherekit import Curve, methods, render, render_png, sample
+from ._curve import Curve
+from ._spherekit import __version__, methods, render, render_png, sample
 from ._scipy import RotationSpline, Slerp
 
 __all__ = [
