@@ -9,8 +9,11 @@ default:
 demo:
     cargo run --quiet --release -p spherekit-cli --bin spherekit -- sample examples/orientations.json --deriv
 
-# Everything CI runs, fast checks first
-test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e test-package test-python test-wheel
+# Everything CI runs, fast checks first (installs Chromium with apt-get when it is missing)
+test: fmt-check lint lint-wasm core-features corpus-check unit doc publish-check test-wasm test-e2e test-package test-python test-wheel
+
+# The Rust and Python checks, for contributors: no root, no browser, no WebAssembly
+check: fmt-check lint core-features corpus-check unit doc publish-check test-python
 
 # Formatting
 fmt-check:
@@ -61,6 +64,12 @@ bench-python:
 # API docs, warnings are errors
 doc:
     RUSTDOCFLAGS="-D warnings" cargo doc --workspace --all-features --no-deps --locked
+
+# The library crates as crates.io would take them: `cargo publish --dry-run` packages spherekit,
+# spherekit-scene and spherekit-render together (each against the others' packaged sources) and
+# compiles each from its package; uncommitted changes are included
+publish-check:
+    cargo publish --dry-run --locked --allow-dirty -p spherekit -p spherekit-scene -p spherekit-render
 
 # Find repeated code (a tool of the development machines)
 duplicates:
