@@ -2,7 +2,8 @@
 # The Python package as a user installs it: `maturin build --release` makes the abi3 wheel, pip
 # installs it into a fresh virtual environment (in a temporary directory, removed afterwards)
 # with the pinned test requirements, and the pytest suite and the guide's examples
-# (docs/python.md) run against the installed package from outside the source tree.
+# (docs/python.md) run against the installed package from outside the source tree, and mypy
+# --strict checks python/tests/typing against its stubs (the types a user's checker sees).
 #
 #   bash scripts/test-wheel.sh          (just test-wheel)
 #
@@ -43,5 +44,6 @@ for name in ("py.typed", "__init__.py", "_curve.pyi", "_scipy.pyi", "_spherekit.
     assert name in shipped, f"the wheel lacks spherekit/{name}"
 print(f"test-wheel: spherekit {spherekit.__version__} from {package}")
 PY
+"$py" -m mypy --strict --no-incremental "$repo/python/tests/typing"
 MPLBACKEND=Agg "$py" -m pytest -q -p no:cacheprovider --rootdir "$repo/python" -c "$repo/python/pyproject.toml" \
   "$repo/python/tests" "$repo/docs/python.md"

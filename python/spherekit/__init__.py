@@ -28,7 +28,8 @@ one-line message (the CLI's for scenes).
 """
 
 from ._curve import Curve
-from ._spherekit import __version__, methods, render, render_png, sample
+from ._spherekit import __version__ as __version__
+from ._spherekit import methods, render, render_png, sample
 from ._scipy import RotationSpline, Slerp
 
 __all__ = [
