@@ -9,8 +9,11 @@ default:
 demo:
     cargo run --quiet --release -p spherekit-cli --bin spherekit -- sample examples/orientations.json --deriv
 
-# Everything CI runs, fast checks first
-test: fmt-check lint lint-wasm core-features corpus-check unit doc test-wasm test-e2e test-python
+# Everything CI runs, fast checks first (installs Chromium with apt-get when it is missing)
+test: fmt-check lint lint-wasm core-features corpus-check unit doc publish-check test-wasm test-e2e test-package test-python test-wheel
+
+# The Rust and Python checks, for contributors: no root, no browser, no WebAssembly
+check: fmt-check lint core-features corpus-check unit doc publish-check test-python
 
 # Formatting
 fmt-check:
@@ -43,9 +46,16 @@ corpus:
 unit:
     cargo test --workspace --all-features --locked
 
-# The Python module: build it into .tools/pyvenv (pinned numpy, scipy, numpy-quaternion, pytest from PyPI) and run its pytest suite
+# The Python module: build it into .tools/pyvenv (the pins of python/test-requirements.txt from
+# PyPI) and run its pytest suite and the examples of docs/python.md
 test-python:
-    bash scripts/setup-python.sh python -m pytest -q python/tests
+    MPLBACKEND=Agg bash scripts/setup-python.sh python -m pytest -q -c python/pyproject.toml --rootdir python
+
+# The Python wheel as installed: `maturin build --release` (abi3), pip into a fresh venv, the
+# pytest suite and docs/python.md run against the installed package from outside the source tree
+test-wheel:
+    bash scripts/setup-python.sh
+    bash scripts/test-wheel.sh
 
 # Time the Python module against scipy in one run (see BENCHMARKS.md, section 7)
 bench-python:
@@ -54,6 +64,12 @@ bench-python:
 # API docs, warnings are errors
 doc:
     RUSTDOCFLAGS="-D warnings" cargo doc --workspace --all-features --no-deps --locked
+
+# The library crates as crates.io would take them: `cargo publish --dry-run` packages spherekit,
+# spherekit-scene and spherekit-render together (each against the others' packaged sources) and
+# compiles each from its package; uncommitted changes are included
+publish-check:
+    cargo publish --dry-run --locked --allow-dirty -p spherekit -p spherekit-scene -p spherekit-render
 
 # Find repeated code (a tool of the development machines)
 duplicates:
@@ -106,18 +122,23 @@ fuzz seconds="600" target="all":
 
 # ---- web: wasm bindings, playground, docs widget -------------------------------------------
 
-# Build the wasm package into web/pkg (installs wasm-bindgen and wasm-opt when missing): the
-# crate for the browser in Cargo's `web` profile (the workspace Cargo.toml: the release profile
-# at opt-level "z" with LTO, one codegen unit, panics abort, no debug info; the renderer at
-# opt-level 3 for frame time), on the stable toolchain with the prebuilt standard library; its
-# JavaScript glue (`wasm-bindgen --target web`); `wasm-opt -Oz` for size; then
-# web/pkg/presets.json, the example menu, from the golden scenes (scripts/web_presets.py).
-# The budget is the gzipped size, what a browser downloads (`just wasm-size`).
+# Build the npm package `spherekit` into web/pkg (installs wasm-pack, wasm-bindgen and wasm-opt
+# when missing): `wasm-pack build` compiles the crate for the browser in Cargo's `web` profile
+# (the workspace Cargo.toml: the release profile at opt-level "z" with LTO, one codegen unit,
+# panics abort, no debug info; the renderer at opt-level 3 for frame time) on the stable
+# toolchain, and runs the pinned wasm-bindgen CLI (`--target web`, with TypeScript
+# declarations); `--mode no-install --no-opt`: wasm-pack downloads nothing, and `wasm-opt -Oz`
+# runs here for size. scripts/npm_package.mjs adds the docs widget (crates/spherekit-wasm/js),
+# the licences, the file list and the `exports` map to package.json; the project's pages load
+# this package. Then web/pkg/presets.json, the playground's example menu (not in the package),
+# from the golden scenes (scripts/web_presets.py). The budget is the gzipped size of the .wasm,
+# what a browser downloads (`just wasm-size`).
 web:
-    bash scripts/setup-web.sh cargo build -p spherekit-wasm --lib --profile web --target wasm32-unknown-unknown --locked
-    bash scripts/setup-web.sh wasm-bindgen "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/web/spherekit_wasm.wasm" --target web --no-typescript --out-dir web/pkg
+    bash scripts/setup-web.sh wasm-pack --quiet build crates/spherekit-wasm --target web --profile web --mode no-install --no-opt \
+        --out-dir "$PWD/web/pkg" --out-name spherekit_wasm --no-gitignore -- --locked
     bash scripts/setup-web.sh wasm-opt web/pkg/spherekit_wasm_bg.wasm -o web/pkg/spherekit_wasm_bg.wasm -Oz --strip-debug --strip-producers \
         --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue
+    node scripts/npm_package.mjs web/pkg
     python3 scripts/web_presets.py
 
 # Build, then serve the playground on http://127.0.0.1:8000/ (docs widget: /docs.html)
@@ -132,6 +153,12 @@ test-wasm:
 # End-to-end browser test of the playground and docs page in headless Chromium
 test-e2e: web
     bash scripts/setup-web.sh --e2e node tests/e2e/run.mjs
+
+# The npm package as installed: `npm pack` of web/pkg into a scratch directory outside the
+# repository, and the code blocks of docs/web.md and the package README run there (pages in
+# headless Chromium, a widget against its golden image; JavaScript under node)
+test-package: web
+    bash scripts/setup-web.sh --e2e node tests/e2e/package.mjs
 
 # Size of the .wasm a browser downloads: gzip -9 against the 350 KiB budget (358 400 bytes), raw
 # size beside it (a report; see BENCHMARKS.md section 6)

@@ -4,14 +4,15 @@
 #
 #   bash scripts/setup-python.sh [command...]
 #
-# Everything comes from PyPI into .tools/pyvenv (git-ignored): the pinned numpy, scipy,
-# numpy-quaternion and pytest, and maturin, which builds crates/spherekit-py with cargo into
-# target/ (so a rebuild after a small change is incremental). Safe to run again.
+# Everything comes from PyPI into .tools/pyvenv (git-ignored): the pinned test requirements
+# (python/test-requirements.txt: numpy, scipy, numpy-quaternion, pytest, matplotlib) and
+# maturin, which builds crates/spherekit-py with cargo into target/ (so a rebuild after a small
+# change is incremental). Safe to run again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 venv="$PWD/.tools/pyvenv"
-# The pins, in one place (BENCHMARKS.md's Python section was measured with these).
-pins=(numpy==2.4.6 scipy==1.17.1 numpy-quaternion==2024.0.13 pytest==9.2.0 maturin==1.15.0)
+mapfile -t pins < <(grep -v '^#' python/test-requirements.txt)
+pins+=(maturin==1.15.0)
 
 if [ ! -x "$venv/bin/python" ]; then
   echo "setup-python: creating $venv" >&2

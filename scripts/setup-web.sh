@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Installs what the web build and its tests need, only when it is missing (idempotent), then
-# runs the given command. Rust tools and wasm-opt go to .tools/ (git-ignored); Chromium comes from
-# Debian; the end-to-end test's npm packages from tests/e2e/package-lock.json.
+# runs the given command. Rust tools (wasm-bindgen, wasm-pack) and wasm-opt go to .tools/
+# (git-ignored); Chromium comes from Debian; the end-to-end test's npm packages from
+# tests/e2e/package-lock.json.
 #
 #   bash scripts/setup-web.sh [--e2e] <command>...
 #
-# The web build (the justfile's `web`) runs cargo, then the wasm-bindgen CLI of exactly the
-# version in Cargo.lock, then binaryen's wasm-opt; the wasm tests use that CLI's test runner.
+# The web build (the justfile's `web`) runs wasm-pack (cargo, then the wasm-bindgen CLI of exactly
+# the version in Cargo.lock), then binaryen's wasm-opt; the wasm tests use that CLI's test runner.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools="$PWD/.tools"
@@ -40,6 +41,17 @@ if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $bindgen_versio
   # --locked first; the registry may lack a locked transitive version, then resolve afresh.
   cargo install --locked --quiet wasm-bindgen-cli --version "$bindgen_version" --root "$tools" \
     || cargo install --quiet wasm-bindgen-cli --version "$bindgen_version" --root "$tools"
+fi
+
+# wasm-pack builds the npm package (the justfile's `web`). It runs with `--mode no-install` and
+# `--no-opt`: it takes the wasm-bindgen CLI above from PATH and downloads nothing; wasm-opt
+# below is run on its output by the recipe. It only runs other tools, so it is built without
+# optimisation (`--debug`): about half the compile time of a release build.
+wasm_pack_version=0.15.1
+if ! wasm-pack --version 2>/dev/null | grep -qx "wasm-pack $wasm_pack_version"; then
+  echo "setup-web: installing wasm-pack $wasm_pack_version into .tools/" >&2
+  cargo install --locked --debug --quiet wasm-pack --version "$wasm_pack_version" --root "$tools" \
+    || cargo install --debug --quiet wasm-pack --version "$wasm_pack_version" --root "$tools"
 fi
 
 # wasm-opt: Debian's binaryen (version 108) cannot read the reference-types output of current

@@ -27,7 +27,9 @@ one-line message (the CLI's for scenes).
 (2, 3)
 """
 
-from ._spherekit import Curve, methods, render, render_png, sample
+from ._curve import Curve
+from ._spherekit import __version__ as __version__
+from ._spherekit import methods, render, render_png, sample
 from ._scipy import RotationSpline, Slerp
 
 __all__ = [

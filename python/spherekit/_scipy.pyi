@@ -1,19 +1,23 @@
-# Type stubs of the scipy drop-ins.
-from typing import Any, Literal, Optional, Union, overload
+# Type stubs of the scipy drop-ins. Rotations are scipy's `Rotation` (without scipy installed,
+# the drop-ins return (n, 4) quaternion arrays instead; the stubs describe the usual case).
+from typing import Literal, Optional, Union, overload
 
 import numpy as np
 import numpy.typing as npt
+from scipy.spatial.transform import Rotation
 
 _Times = Union[float, npt.ArrayLike]
+# A Rotation, or quaternions [x, y, z, w] ([w, x, y, z] with scalar_first=True), shape (n, 4).
+_Rotations = Union[Rotation, npt.ArrayLike]
 
 class RotationSpline:
     times: npt.NDArray[np.float64]
     @property
-    def rotations(self) -> Any: ...
+    def rotations(self) -> Rotation: ...
     def __init__(
         self,
         times: npt.ArrayLike,
-        rotations: Any,
+        rotations: _Rotations,
         *,
         end: Optional[Literal["scipy", "natural", "clamped"]] = None,
         closed: bool = False,
@@ -22,9 +26,9 @@ class RotationSpline:
         scalar_first: bool = False,
     ) -> None: ...
     @overload
-    def __call__(self, times: _Times) -> Any: ...
+    def __call__(self, times: _Times) -> Rotation: ...
     @overload
-    def __call__(self, times: _Times, order: Literal[0]) -> Any: ...
+    def __call__(self, times: _Times, order: Literal[0]) -> Rotation: ...
     @overload
     def __call__(self, times: _Times, order: Literal[1, 2]) -> npt.NDArray[np.float64]: ...
 
@@ -32,8 +36,8 @@ class Slerp:
     times: npt.NDArray[np.float64]
     timedelta: npt.NDArray[np.float64]
     @property
-    def rotations(self) -> Any: ...
+    def rotations(self) -> Rotation: ...
     @property
     def rotvecs(self) -> npt.NDArray[np.float64]: ...
-    def __init__(self, times: npt.ArrayLike, rotations: Any, *, scalar_first: bool = False) -> None: ...
-    def __call__(self, times: _Times) -> Any: ...
+    def __init__(self, times: npt.ArrayLike, rotations: _Rotations, *, scalar_first: bool = False) -> None: ...
+    def __call__(self, times: _Times) -> Rotation: ...

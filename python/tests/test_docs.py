@@ -3,7 +3,9 @@
 """The examples in the docstrings run (native and Python ones alike)."""
 
 import doctest
+import importlib.metadata
 import inspect
+import re
 
 import pytest
 
@@ -38,3 +40,32 @@ def test_docstring_examples(name):
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
     runner.run(test)
     assert runner.failures == 0 and runner.tries > 0
+
+
+def public_callables():
+    """Every public function, class and method of the package, by name."""
+    for name in spherekit.__all__:
+        obj = getattr(spherekit, name)
+        yield name, obj
+        if inspect.isclass(obj):
+            for attr, member in vars(obj).items():
+                if callable(member) and (not attr.startswith("_") or attr == "__call__"):
+                    yield f"{name}.{attr}", member
+
+
+@pytest.mark.parametrize("name,obj", sorted(public_callables(), key=lambda p: p[0]), ids=lambda v: v if isinstance(v, str) else "")
+def test_signatures_are_visible_to_help(name, obj):
+    """help() and Jupyter show the real parameters (pyo3 `signature`s), not `(*args, **kwargs)`."""
+    import pydoc
+
+    signature = inspect.signature(obj)  # ValueError for a native callable without one
+    kinds = {p.kind for p in signature.parameters.values()} - {inspect.Parameter.POSITIONAL_ONLY}
+    assert kinds != {inspect.Parameter.VAR_POSITIONAL, inspect.Parameter.VAR_KEYWORD}, f"{name}{signature}"
+    shown = pydoc.render_doc(obj, renderer=pydoc.plaintext)
+    parameters = [p for p in signature.parameters if p != "self"]
+    assert all(p in shown for p in parameters), f"help({name}) does not show {signature}"
+
+
+def test_the_version_is_the_crates():
+    assert re.fullmatch(r"\d+\.\d+\.\d+", spherekit.__version__)
+    assert importlib.metadata.version("spherekit") == spherekit.__version__

@@ -114,4 +114,4 @@ def test_pickles_name_the_public_classes(rng, cls):
     data = pickle.dumps(spline)
     assert b"spherekit._scipy" in data and cls.__name__.encode() in data and b"_CubicRotations" not in data
     curve = spherekit.Curve("geodesic", [[1, 0, 0], [0, 1, 0]])
-    assert b"spherekit._spherekit" in pickle.dumps(curve)
+    assert b"spherekit._curve" in pickle.dumps(curve) and b"Curve" in pickle.dumps(curve)

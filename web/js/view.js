@@ -4,7 +4,7 @@
 // reduced resolution (state.quick) and shown at the same size; the still frame afterwards is
 // the full-resolution one, the same pixels as the golden at ?size=.
 import * as sk from '../pkg/spherekit_wasm.js';
-import { drawBodies } from '../draw.js';
+import { drawBodies } from '../pkg/draw.js';
 import { $, state, fixedSize, showError } from './state.js';
 
 /** The view options with the renderer's defaults filled in (Rust's `view_options`). */

@@ -199,7 +199,7 @@ pub(crate) fn write_jets<P: Flat>(
 /// (2, 3)
 ///
 /// ```
-#[pyclass(module = "spherekit._spherekit", name = "Curve", frozen)]
+#[pyclass(module = "spherekit._spherekit", name = "Curve", frozen, subclass)]
 pub(crate) struct PyCurve {
     built: BuiltCurve,
     /// The one-curve scene, for checking parameters under `extrapolate="error"`.

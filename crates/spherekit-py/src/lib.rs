@@ -31,5 +31,7 @@ fn _spherekit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(scene::render, m)?)?;
     m.add_function(wrap_pyfunction!(scene::render_png, m)?)?;
     m.add_function(wrap_pyfunction!(scene::methods, m)?)?;
+    // The package's version is the crate's (python/pyproject.toml takes it from Cargo.toml).
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -963,3 +963,8 @@ fn sample<P: Manifold>(
         joints: joints.iter().map(|&t| unit(t)).collect(),
     }
 }
+
+/// The crate README's examples, run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

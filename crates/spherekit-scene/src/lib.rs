@@ -81,3 +81,8 @@ pub use scene::{
 pub use space::{MAX_DIMENSION, Space};
 pub use timing::{EXTRAPOLATIONS, PARAMETRIZATIONS, Parametrization, extrapolate_name};
 pub use view::{DEFAULT_FLATTENING_ACCURACY, MAX_FRAMES, MAX_TITLE_CHARS, Plot, PlotTime, View};
+
+/// The crate README's examples, run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! WebAssembly bindings for the browser playground (`web/index.html`) and the docs widget
-//! (`web/widget.js`): bindings only, over [`spherekit_scene`] (scenes, the method registry,
+//! (`js/widget.js`; both ship in the npm package `spherekit`, docs/web.md): bindings only, over [`spherekit_scene`] (scenes, the method registry,
 //! document editing), [`spherekit_render`] (pixels, the camera, picking) and the core's
 //! continuity classes.
 //!

@@ -102,8 +102,33 @@
 //! - `libm`: route every transcendental function through the `libm` crate, so that native and
 //!   WebAssembly builds give bit-identical results. Enable it in binaries that render.
 //! - `serde`: `Serialize` for points.
+//! - `mint`: conversions of [`S2Point`] and [`UnitQuat`] from and to [`mint`]'s `Vector3` and
+//!   `Quaternion` (`f64`, and `f32` in), the way to and from another glam version (bevy's);
+//!   glam's own `mint` conversions for the re-exported [`glam`]. The point types also convert
+//!   from and to plain arrays without any feature (`S2Point::from_array`,
+//!   `UnitQuat::from_xyzw`, `SnPoint::from_slice`, and `TryFrom`).
+//!
+//! An application on another glam version (bevy's, say) converts through mint, with glam's
+//! `mint` feature on its side, without the two glams having to agree:
+//!
+//! ```
+//! # #[cfg(feature = "mint")] {
+//! use spherekit::{S2Point, UnitQuat};
+//!
+//! // f32 values as the application's glam gives them to mint (`Vec3::into`, `Quat::into`).
+//! let up = mint::Vector3 { x: 0.0_f32, y: 2.0, z: 0.0 };
+//! let turn = mint::Quaternion { v: mint::Vector3 { x: 0.0_f32, y: 0.0, z: 1.0 }, s: 1.0 };
+//! let p = S2Point::try_from(up).unwrap();
+//! let q = UnitQuat::try_from(turn).unwrap();
+//! assert_eq!(p.to_array(), [0.0, 1.0, 0.0]);
+//! // And back as f64 mint values, which the application's glam reads as `DVec3` / `DQuat`
+//! // (then `.as_vec3()` / `.as_quat()` for f32).
+//! let back: mint::Quaternion<f64> = q.into();
+//! assert!((back.s - core::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15);
+//! # }
+//! ```
 
-#![cfg_attr(docsrs, feature(doc_auto_cfg))]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub use glam;
 
@@ -119,6 +144,7 @@ mod catmull_rom;
 mod catmull_rom_nlerp;
 mod circle;
 mod continuity;
+mod convert;
 mod corner_blend;
 mod cubic;
 mod curve;
@@ -187,3 +213,8 @@ pub use squad::Squad;
 #[cfg(doctest)]
 #[doc = include_str!("../../../README.md")]
 struct ReadmeDoctests;
+
+/// The crate README's (crates.io's page) example, run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct CrateReadmeDoctests;

@@ -1,18 +1,20 @@
 // spherekit docs widget: a small interactive view of one scene (drag to turn, play to animate,
-// a link that opens the same scene in the playground).
+// optionally a link that opens the same scene in a playground). Part of the npm package
+// (`import { mount } from 'spherekit/widget'`, or this file from a CDN); the project's pages load
+// it from web/pkg/, the same package.
 //
 //   <script type="module" src="widget.js"></script>
 //   <spherekit-view size="260" scene='{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}'></spherekit-view>
 //
 // or from a module: import { mount } from './widget.js'; mount(element, sceneJsonText, { size: 260 }).
 // A bad scene shows the CLI's message as text in place of the view.
-import init, * as sk from './pkg/spherekit_wasm.js';
+import init, * as sk from './spherekit_wasm.js';
 import { drawBodies } from './draw.js';
 
 let loading = null;
 /** Loads the wasm module once for all widgets on the page. */
 function ready() {
-  loading ??= init({ module_or_path: new URL('./pkg/spherekit_wasm_bg.wasm', import.meta.url) });
+  loading ??= init({ module_or_path: new URL('./spherekit_wasm_bg.wasm', import.meta.url) });
   return loading;
 }
 
@@ -38,10 +40,12 @@ function injectStyle() {
 
 /**
  * Shows `scene` (JSON text) in `element`: the rendered sphere, drag to turn it, a play button
- * that animates t. Resolves to a handle `{ pg, redraw, destroy }`, or null for a bad scene
- * (whose message is shown as text). `element.dataset.state` becomes "ready" or "error".
+ * that animates t and, when `playground` (a URL, relative to the page) is given, a link that
+ * opens the scene there (`<playground>#scene=…`). Resolves to a handle `{ pg, redraw, destroy }`,
+ * or null for a bad scene (whose message is shown as text). `element.dataset.state` becomes
+ * "ready" or "error".
  */
-export async function mount(element, scene, { size = 260 } = {}) {
+export async function mount(element, scene, { size = 260, playground = null } = {}) {
   await ready();
   injectStyle();
   element.replaceChildren();
@@ -85,12 +89,15 @@ export async function mount(element, scene, { size = 260 } = {}) {
   slider.step = 'any';
   slider.value = String(t0);
   slider.setAttribute('aria-label', 'Parameter t');
-  const open = document.createElement('a');
-  open.href = `${new URL('index.html', import.meta.url).href}#scene=${encodeURIComponent(pg.scene_json())}`;
-  open.textContent = 'Playground ↗';
-  open.title = 'Open this scene in the playground';
-  open.className = 'skv-open';
-  bar.append(play, slider, open);
+  bar.append(play, slider);
+  if (playground) {
+    const open = document.createElement('a');
+    open.href = `${new URL(playground, document.baseURI).href}#scene=${encodeURIComponent(pg.scene_json())}`;
+    open.textContent = 'Playground ↗';
+    open.title = 'Open this scene in the playground';
+    open.className = 'skv-open';
+    bar.append(open);
+  }
   const error = document.createElement('p');
   error.className = 'skv-error';
   error.hidden = true;
@@ -178,13 +185,14 @@ export async function mount(element, scene, { size = 260 } = {}) {
   };
 }
 
-/** `<spherekit-view scene="…" size="260">`: the widget as a custom element. */
+/** `<spherekit-view scene="…" size="260" playground="…">`: the widget as a custom element. */
 class SpherekitView extends HTMLElement {
   connectedCallback() {
     if (this.started) return;
     this.started = true;
     const size = Number(this.getAttribute('size')) || 260;
-    mount(this, this.getAttribute('scene') ?? '', { size }).catch((e) => {
+    const playground = this.getAttribute('playground');
+    mount(this, this.getAttribute('scene') ?? '', { size, playground }).catch((e) => {
       this.textContent = `error: ${e.message}`;
       this.dataset.state = 'error';
     });
