@@ -12,15 +12,13 @@ export function viewOptions() {
   return JSON.parse(state.pg.view_options()) ?? { plot: 'none', legend: false, axes: ['x'], frames: 0 };
 }
 
-/** Whether the scene shows a plot under the sphere (speed, or speed and omega). */
-export function hasPlot() {
-  return viewOptions().plot !== 'none';
-}
-
 /** The frame drawn while dragging: this fraction of the CSS width in pixels, at most QUICK_MAX
  * wide (measured: BENCHMARKS.md, section 6). */
 const QUICK_SCALE = 0.7;
 const QUICK_MAX = 640;
+
+/** The smallest text of the figure (plot and legend), CSS pixels per em. */
+export const MIN_TEXT = 11;
 
 function fit() {
   state.dpr = fixedSize ? 1 : window.devicePixelRatio || 1;
@@ -35,11 +33,11 @@ function fit() {
   const h = narrow
     ? window.innerHeight - 56
     : stage.clientHeight - stage.querySelector('.toolbar').offsetHeight - 16;
-  // The frame's height per width: the last still frame's if it had the same plot strip (plots
-  // and the legend make it taller than wide), or a guess.
-  const plot = hasPlot();
-  const key = `${plot} ${state.pg.curve_count()}`;
-  const factor = state.aspect?.key === key ? state.aspect.value : plot ? 1.45 : 1.08;
+  // The frame's height per width: the last still frame's if it had the same layout (plots,
+  // the legend and a title make it taller than wide), or a guess that drawNow corrects.
+  const view = viewOptions();
+  const key = `${JSON.stringify(view)} ${state.pg.curve_count()} ${state.pg.scene_json().includes('"title"')}`;
+  const factor = state.aspect?.key === key ? state.aspect.value : view.plot === 'omega' ? 1.9 : view.plot !== 'none' ? 1.45 : 1.08;
   const css = Math.max(160, Math.min(w, h / factor));
   state.base = Math.floor(css);
   state.size = Math.min(4096, Math.floor(css * state.dpr * state.zoom));
@@ -69,13 +67,18 @@ export function redraw(task = null) {
   });
 }
 
-export function drawNow() {
+/** Draws the frame now. A frame whose height per width differs from the one `fit` assumed
+ * (a new layout) is fitted and drawn once more, so that the figure fits the stage. */
+export function drawNow(refit = true) {
   const canvas = $('scene');
   fit();
   const quick = state.quick && !fixedSize;
   const drawSize = quick
     ? Math.min(state.size, Math.max(160, Math.round(Math.min(QUICK_MAX, (QUICK_SCALE * state.size) / state.dpr))))
     : state.size;
+  // Text of at least MIN_TEXT CSS pixels (zoomed with the figure); none at a fixed size (the
+  // golden's pixels).
+  state.pg.set_min_text(fixedSize ? 0 : (MIN_TEXT * state.dpr * state.zoom * drawSize) / state.size);
   try {
     state.pg.draw(canvas, drawSize);
   } catch (e) {
@@ -87,11 +90,10 @@ export function drawNow() {
   }));
   const aspect = canvas.height / canvas.width;
   if (!quick && state.zoom === 1) {
-    const again = state.aspect?.key !== state.aspectKey && !fixedSize;
     state.aspect = { key: state.aspectKey, value: aspect };
-    if (again && Math.abs(aspect - state.fitFactor) > 0.01) {
-      // The first frame of this shape: fit again with its real height.
-      drawNow();
+    if (refit && !fixedSize && Math.abs(aspect - state.fitFactor) > 0.01) {
+      // The frame is not the shape fit assumed: fit again with its real height.
+      drawNow(false);
       return;
     }
   }
