@@ -579,6 +579,8 @@ test('every failing action shows its message inside the viewport, where the acti
     const [x, y] = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 1));
     await page.mouse.click(x, y);
     assert.equal(await page.textContent('#point-editor p'), 'curve 1, point 2', `${where}: the point is selected`);
+    v = await visibleInViewport(page, '#point-section');
+    assert.ok(v.ok, `${where}: the point editor is in reach ${v.why}`);
     await page.keyboard.press('Delete');
     assert.match(await page.textContent('#error'), /^error: /, `${where}: deleting below the minimum is refused`);
     v = await visibleInViewport(page, '#notice');
@@ -965,6 +967,8 @@ test('the body frame: the ω plot, the readout, and a note where the frames coin
   assert.equal(await page.textContent('#error'), '');
   assert.equal(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().scene_json())).view.omega_frame, 'body', 'the frame is the scene\'s');
   const after = await strip();
+  const f = await figureBox(page);
+  assert.ok(f.wrap.bottom <= f.view.h && f.canvas.height <= f.wrap.height + 1, `the figure still fits (${JSON.stringify(f)})`);
   assert.notEqual(after.title, before.title, 'the plot title changes (space frame → body frame)');
   assert.notEqual(after.values, before.values, 'the plotted components change');
   const body = (await page.evaluate(() => window.spherekitPage.readouts()))[0];

@@ -388,6 +388,8 @@ export function renderPointEditor() {
     return;
   }
   $('point-section').classList.add('selected');
+  // In reach: a bottom sheet on a phone (CSS), scrolled into the side panel's view elsewhere.
+  if (!matchMedia('(max-width: 800px)').matches) $('point-section').scrollIntoView({ block: 'nearest' });
   const [c, i] = state.selected;
   const q = state.pg.point(c, i);
   const linked = sharing(c);

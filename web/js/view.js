@@ -68,8 +68,9 @@ export function redraw(task = null) {
 }
 
 /** Draws the frame now. A frame whose height per width differs from the one `fit` assumed
- * (a new layout) is fitted and drawn once more, so that the figure fits the stage. */
-export function drawNow(refit = true) {
+ * (a new layout) is fitted and drawn again, so that the figure fits the stage: a few times at
+ * most, as the text floor makes a smaller figure relatively taller. */
+export function drawNow(refits = 4) {
   const canvas = $('scene');
   fit();
   const quick = state.quick && !fixedSize;
@@ -91,9 +92,9 @@ export function drawNow(refit = true) {
   const aspect = canvas.height / canvas.width;
   if (!quick && state.zoom === 1) {
     state.aspect = { key: state.aspectKey, value: aspect };
-    if (refit && !fixedSize && Math.abs(aspect - state.fitFactor) > 0.01) {
+    if (refits > 0 && !fixedSize && Math.abs(aspect - state.fitFactor) > 0.002) {
       // The frame is not the shape fit assumed: fit again with its real height.
-      drawNow(false);
+      drawNow(refits - 1);
       return;
     }
   }
@@ -163,9 +164,9 @@ export function drawOverlay() {
     ctx.fill();
   }
   if (state.hover && !sameKey(state.hover, state.selected)) {
-    for (const p of markers(state.hover)) ring(ctx, p, '#0072b2', 2.5 * k, 12 * k);
+    for (const p of markers(state.hover)) ring(ctx, p, '#5b6470', 2.5 * k, 12 * k);
   }
-  for (const p of markers(state.selected)) ring(ctx, p, '#e69f00', 3 * k, 11 * k);
+  for (const p of markers(state.selected)) ring(ctx, p, '#1f2328', 3 * k, 11 * k);
 }
 
 function ring(ctx, p, color, width, radius) {

@@ -351,6 +351,15 @@ mod tests {
     }
 
     #[test]
+    fn the_frame_of_omega_is_space_unless_body_is_asked_for() {
+        assert!(!view("{}", Space::S3, 1).expect("view").omega_body);
+        let space = view(r#"{"omega_frame": "space"}"#, Space::S3, 1).expect("view");
+        assert!(!space.omega_body, "space");
+        let body = view(r#"{"omega_frame": "body"}"#, Space::S3, 1).expect("view");
+        assert!(body.omega_body, "body");
+    }
+
+    #[test]
     fn bad_figure_options_name_the_field() {
         let long = format!(r#"{{"title": "{}"}}"#, "x".repeat(MAX_TITLE_CHARS + 1));
         for (json, space, expected) in [
@@ -381,6 +390,16 @@ mod tests {
                 r#"{"subtitle": "x"}"#,
                 Space::S2,
                 "view.subtitle: unknown view option",
+            ),
+            (
+                r#"{"omega_frame": "world"}"#,
+                Space::S3,
+                "view.omega_frame: must be \"space\" or \"body\"",
+            ),
+            (
+                r#"{"omega_frame": "body"}"#,
+                Space::S2,
+                "view.omega_frame: the frame of ω applies to S3 scenes only",
             ),
         ] {
             let e = view(json, space, 1).expect_err(json);
