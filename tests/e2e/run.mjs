@@ -1119,6 +1119,29 @@ test('a shared link keeps t and zoom', async () => {
   await page.close();
 });
 
+test('"New" starts again from the fewest points of the method, undoably', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const text = await readFile(path.join(goldenDir, 'squad_s3.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  const before = await page.evaluate(() => window.spherekitPage.handle().scene_json());
+  await page.click('#new-scene');
+  assert.equal(await page.textContent('#error'), '');
+  const fresh = JSON.parse(await page.evaluate(() => window.spherekitPage.handle().scene_json()));
+  const min = await page.evaluate(() => JSON.parse(window.spherekitPage.handle().curve_json(0)).points.length);
+  assert.equal(fresh.space, 'S3');
+  assert.equal(fresh.method, 'squad');
+  const need = await page.evaluate(async () => {
+    const sk = await import('./pkg/spherekit_wasm.js');
+    return Math.max(2, JSON.parse(sk.methods()).find((m) => m.id === 'squad').min_points);
+  });
+  assert.equal(min, need, 'the fewest points squad takes');
+  assert.ok(min >= 2 && min < JSON.parse(before).points.length, `${min} points`);
+  await page.click('#undo');
+  assert.equal(await page.evaluate(() => window.spherekitPage.handle().scene_json()), before, 'undo brings the scene back');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
 test('screenshots at 1400×900, 1024×700 and 390×844, device pixel ratio 1 and 2', async () => {
   const s3 = await readFile(path.join(goldenDir, 'compare_s3_squad_catmull_bspline_arcblend.json'), 'utf8');
   const b = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });

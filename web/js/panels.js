@@ -388,8 +388,6 @@ export function renderPointEditor() {
     return;
   }
   $('point-section').classList.add('selected');
-  // In reach: a bottom sheet on a phone (CSS), scrolled into the side panel's view elsewhere.
-  if (!matchMedia('(max-width: 800px)').matches) $('point-section').scrollIntoView({ block: 'nearest' });
   const [c, i] = state.selected;
   const q = state.pg.point(c, i);
   const linked = sharing(c);
@@ -447,6 +445,8 @@ export function renderPointEditor() {
   del.textContent = 'Delete point';
   del.addEventListener('click', deleteSelected);
   box.append(del);
+  // In reach: a bottom sheet on a phone (CSS), scrolled into the side panel's view elsewhere.
+  if (!matchMedia('(max-width: 800px)').matches) $('point-section').scrollIntoView({ block: 'nearest' });
 }
 
 export function deleteSelected() {

@@ -106,8 +106,8 @@ fn nothing_or_two_spheres_is_an_error() {
 fn the_omega_plot_names_its_frame_and_curves_are_named_by_method() {
     let text = |frame: &str| {
         format!(
-            r#"{{"space":"S3","curves":[{{"method":"squad","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0]]}},
-            {{"method":"catmull-rom","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0]]}}],
+            r#"{{"space":"S3","curves":[{{"method":"squad","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0],[0.5,0.5,0.5,0.5]]}},
+            {{"method":"catmull-rom","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0],[0.5,0.5,0.5,0.5]]}}],
             "view":{{"plot":"omega"{frame}}}}}"#
         )
     };
