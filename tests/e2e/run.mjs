@@ -673,7 +673,7 @@ test('undo restores the scene exactly after a drag; redo; reset view; zoom; hove
   assert.equal(await scene(), original, 'undo restores the scene exactly');
   await page.click('#redo');
   assert.equal(await scene(), dragged, 'redo brings the drag back');
-  await page.locator('#overlay').focus().catch(() => {});
+  await page.locator('#overlay').focus();
   await page.evaluate(() => document.activeElement?.blur());
   await page.keyboard.press('Control+z');
   assert.equal(await scene(), original, 'Ctrl+Z undoes');
