@@ -4,8 +4,9 @@
 // vectors and colours come from the wasm handle (eval, readout, project, axis_colors); no math
 // here beyond scaling a vector to the sphere.
 
-/** Draws every curve's moving body or point at time `t` (each curve clamped to its domain) on a 2D context. */
-export function drawBodies(ctx, pg, t, size) {
+/** Draws every curve's moving body or point at time `t` (each curve clamped to its domain) on a
+ * 2D context, with the ω arrow of S³ curve `omega` (default: every S³ curve). */
+export function drawBodies(ctx, pg, t, size, omega = null) {
   const k = size / 512;
   const colors = JSON.parse(pg.colors());
   const axisColors = JSON.parse(pg.axis_colors());
@@ -32,7 +33,7 @@ export function drawBodies(ctx, pg, t, size) {
         ctx.fill();
       }
       ctx.globalAlpha = 1;
-      drawOmega(ctx, pg, c, t, size, o, several ? colors[c] : '#1f2328');
+      if (omega === null || omega === c) drawOmega(ctx, pg, c, t, size, o, several ? colors[c] : '#1f2328');
     } else {
       const p = v.length === 2 ? pg.project(v[0], v[1], 0, size) : pg.project(v[0], v[1], v[2], size);
       ctx.globalAlpha = p[2] < 0 ? 0.5 : 1;

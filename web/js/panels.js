@@ -216,6 +216,7 @@ function curveCard(c, color, space) {
       state.activeCurve = c;
       for (const el of $('curves').children) el.classList.remove('active');
       card.classList.add('active');
+      drawOverlay(); // its ω arrow
     }
   });
   const p = document.createElement('p');

@@ -138,7 +138,7 @@ export function drawOverlay() {
   // The same marks as last time (turning the view with nothing on the sphere's overlay moves
   // only the plot-free image): leave the overlay alone, so the compositor has less to do.
   const onSphere = bodies || state.selected || state.hover;
-  const key = [state.t, bodies, state.selected, state.hover, overlay.width, overlay.height, pg.builds(), pg.curve_count(),
+  const key = [state.t, bodies, state.selected, state.hover, state.activeCurve, overlay.width, overlay.height, pg.builds(), pg.curve_count(),
     onSphere ? pg.camera().join() : '', JSON.stringify(state.plots)].join('|');
   if (key === lastOverlay) return;
   lastOverlay = key;
@@ -146,7 +146,8 @@ export function drawOverlay() {
   ctx.clearRect(0, 0, overlay.width, overlay.height);
   const s = state.size;
   const k = s / 512;
-  if (bodies) drawBodies(ctx, pg, state.t, s);
+  // ω of the active curve only: one arrow per curve would crowd a comparison.
+  if (bodies) drawBodies(ctx, pg, state.t, s, Math.min(state.activeCurve, pg.curve_count() - 1));
   for (const p of state.plots ?? []) {
     const x = plotX(p, state.t);
     ctx.strokeStyle = '#b3261e';
