@@ -42,7 +42,8 @@ DICT_TOKENS = ["space", "method", "points", "knots", "params", "canonicalize", "
                "error", "segment",
                "quaternion_order", "xyzw", "samples", "eval_at", "curves", "view", "color",
                "label", "camera", "plot", "speed", "omega", "none", "plot_time", "normalized",
-               "frames", "axes", "accuracy", "legend", "title", "S1", "S2", "S3", "S5"]
+               "frames", "omega_frame", "body", "axes", "accuracy", "legend", "title", "S1", "S2",
+               "S3", "S5"]
 DICT_LITERALS = ["1e-9", "1e300", "-1e300", "1e-300", "0.999999999", "-1", "true", "false"]
 
 

@@ -35,7 +35,6 @@ let server;
 let origin;
 let browser;
 let userDataDir;
-const externalRequests = [];
 
 before(async () => {
   await mkdir(outDir, { recursive: true });
@@ -83,7 +82,6 @@ async function newPage(viewport = { width: 1280, height: 860 }) {
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('request', (r) => { if (!r.url().startsWith(origin) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) externalRequests.push(r.url()); });
   page.errors = errors;
   return page;
 }
@@ -375,8 +373,21 @@ test('the docs page renders a widget for every method', async () => {
   await page.mouse.move(box.x + box.width * 0.6, box.y + box.height * 0.4, { steps: 5 });
   await page.mouse.up();
   assert.notDeepEqual(await canvas.screenshot(), before, 'dragging turns the widget');
+  const slider = first.locator('input[type=range]');
+  const start = Number(await slider.inputValue());
   await first.locator('button').click();
-  await page.waitForTimeout(400);
+  await page.waitForFunction((el) => Number(el.value) > Number(el.min) + 0.05 * (Number(el.max) - Number(el.min)), await slider.elementHandle());
+  assert.ok(Number(await slider.inputValue()) > start, 'playing moves t');
+  // Each widget is as wide as its column, so its text can be read.
+  const fits = await page.$$eval('section.method', (sections) => sections.map((s) => {
+    const column = s.querySelector('spherekit-view').getBoundingClientRect().width;
+    const canvas = s.querySelector('spherekit-view canvas').getBoundingClientRect().width;
+    return { method: s.dataset.method, column, canvas };
+  }));
+  for (const f of fits) {
+    assert.ok(Math.abs(f.canvas - f.column) <= 2, `${f.method}: the view fills its column (${f.canvas} of ${f.column} px)`);
+    assert.ok(f.canvas >= 400, `${f.method}: the view is ${f.canvas} px wide at 1100 px`);
+  }
   await page.screenshot({ path: path.join(outDir, 'docs.png'), fullPage: true });
   assert.deepEqual(page.errors, [], 'no page errors');
   await page.close();
@@ -413,7 +424,7 @@ test('the parameter controls edit the scene', async () => {
   assert.equal((await params()).beta1, 1, 'back to one value (the first)');
   // A method with knots: typed in, checked by the scene format.
   await page.locator('#curves select').first().selectOption('catmull-rom');
-  const knots = page.getByLabel('Knots of curve 0');
+  const knots = page.getByLabel('Knots of curve 1');
   await knots.fill('0, 1, 4');
   await knots.dispatchEvent('change');
   assert.equal(await page.textContent('#error'), '');
@@ -434,19 +445,19 @@ test('the constant-speed toggle and the extrapolation choice edit the scene', as
   await openPlayground(page, sceneUrl(JSON.stringify(scene)));
   const curve = async () => JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0)));
   const before = await canvasHash(page);
-  await page.getByLabel('Constant speed of curve 0').check();
+  await page.getByLabel('Constant speed of curve 1').check();
   assert.equal((await curve()).parametrization, 'arclength');
   const domain = await page.evaluate(() => Array.from(window.spherekitPage.handle().sample_array(0, 'domain')));
   // Two great-circle arcs: a quarter turn and atan2(0.8, 0.6).
   assert.ok(Math.abs(domain[1] - (Math.PI / 2 + Math.atan2(0.8, 0.6))) < 1e-9, `the domain is [0, L]: ${domain}`);
   assert.notEqual(await canvasHash(page), before, 'the speed plot is redrawn');
-  await page.getByLabel('Extrapolation of curve 0').selectOption('extend');
+  await page.getByLabel('Extrapolation of curve 1').selectOption('extend');
   assert.equal((await curve()).extrapolate, 'extend');
   // A policy this curve has no value for: the scene format's message, the scene unchanged.
-  await page.getByLabel('Extrapolation of curve 0').selectOption('segment');
+  await page.getByLabel('Extrapolation of curve 1').selectOption('segment');
   assert.match(await page.textContent('#error'), /^error: extrapolate: "segment"/);
   assert.equal((await curve()).extrapolate, 'extend');
-  await page.getByLabel('Constant speed of curve 0').uncheck();
+  await page.getByLabel('Constant speed of curve 1').uncheck();
   assert.equal((await curve()).parametrization, undefined);
   assert.deepEqual(page.errors, [], 'no page errors');
   await page.close();
@@ -459,20 +470,17 @@ test('screenshots of the playground', async () => {
   await page.screenshot({ path: path.join(outDir, 'playground-s2.png') });
   const s3 = await readFile(path.join(goldenDir, 'geodesic_s3.json'), 'utf8');
   await openPlayground(page, sceneUrl(s3));
+  const [t0, t1] = await page.evaluate(() => window.spherekitPage.axis());
   await page.click('#play');
-  await page.waitForTimeout(700);
+  await page.waitForFunction((t) => window.spherekitPage.t() > t, t0 + 0.1 * (t1 - t0));
   await page.screenshot({ path: path.join(outDir, 'playground-s3-playing.png') });
   await page.click('#play');
-  // Select a key by clicking an axis tip.
-  const [x, y] = await page.evaluate(() => {
-    const h = window.spherekitPage.handle();
-    const key = Array.from(h.point(0, 2));
-    return window.spherekitPage.keyTipOnScreen ? window.spherekitPage.keyTipOnScreen(0, 2) : [0, 0, key];
-  });
-  if (x) {
-    await page.mouse.click(x, y);
-    await page.screenshot({ path: path.join(outDir, 'playground-s3-key.png') });
-  }
+  assert.equal(await page.textContent('#play'), '▶ Play', 'paused');
+  // Select a key by clicking an axis tip: the point editor shows it.
+  const [x, y] = await page.evaluate(() => window.spherekitPage.keyTipOnScreen(0, 2));
+  await page.mouse.click(x, y);
+  assert.equal(await page.textContent('#point-editor p'), 'curve 1, point 3', 'the key is selected');
+  await page.screenshot({ path: path.join(outDir, 'playground-s3-key.png') });
   assert.deepEqual(page.errors, [], 'no page errors');
   await page.close();
 });
@@ -551,12 +559,13 @@ test('every failing action shows its message inside the viewport, where the acti
       el.dispatchEvent(new Event('change', { bubbles: true }));
     });
     assert.match(await page.textContent('#error'), /did not converge/, where);
-    const help = await page.textContent('#error-help');
+    const help = await page.textContent('#error-lead');
     assert.match(help, /^No Beta spline with these β passes through the points: the nearest one found misses a point by \d\.\d+ rad \(\d+°\)/, `${where}: ${help}`);
     v = await visibleInViewport(page, '#notice');
     assert.ok(v.ok, `${where} slider: the message is inside the viewport ${v.why}`);
     assert.equal(await slider.evaluate((el) => el.closest('[aria-invalid="true"]') !== null), true, `${where}: the slider is marked`);
-    assert.equal(await slider.inputValue(), '1.5', `${where}: the slider is not snapped back`);
+    assert.equal(Number(await slider.inputValue()), 1, `${where}: the slider goes back to the scene's β₁`);
+    assert.ok(await page.evaluate(() => Boolean(document.getElementById('error-lead').compareDocumentPosition(document.getElementById('error')) & Node.DOCUMENT_POSITION_FOLLOWING)), `${where}: the plain words come first`);
     assert.equal(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).params.beta1, 1, 'the scene keeps its last good β₁');
     // The offer: the approximating spline with the β₁ asked for.
     await page.click('#error-offer');
@@ -569,7 +578,9 @@ test('every failing action shows its message inside the viewport, where the acti
     await page.evaluate(() => window.scrollTo(0, 0));
     const [x, y] = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 1));
     await page.mouse.click(x, y);
-    assert.equal(await page.textContent('#point-editor p'), 'curve 0, point 1', `${where}: the point is selected`);
+    assert.equal(await page.textContent('#point-editor p'), 'curve 1, point 2', `${where}: the point is selected`);
+    v = await visibleInViewport(page, '#point-section');
+    assert.ok(v.ok, `${where}: the point editor is in reach ${v.why}`);
     await page.keyboard.press('Delete');
     assert.match(await page.textContent('#error'), /^error: /, `${where}: deleting below the minimum is refused`);
     v = await visibleInViewport(page, '#notice');
@@ -615,7 +626,11 @@ test('the first screen: an S² example, a sentence, three steps, examples groupe
   await openPlayground(page, `${origin}/index.html`);
   assert.equal(await page.evaluate(() => window.spherekitPage.handle().space()), 'S2');
   assert.ok((await page.textContent('#intro')).length > 40, 'one sentence on what the page is');
-  assert.equal(await page.locator('#try li').count(), 3, 'three "try this" steps');
+  assert.equal(await page.locator('#try li').count(), 4, 'four "try this" steps');
+  const steps = await page.textContent('#try');
+  assert.match(steps, /double-click/, 'the hints say how to add a point');
+  assert.match(steps, /turn the view/, 'the hints say how to turn the view');
+  assert.match(steps, /wheel/, 'the hints say how to zoom');
   const groups = await page.$$eval('#preset optgroup', (gs) => gs.map((g) => ({ label: g.label, items: [...g.children].map((o) => ({ text: o.textContent, title: o.title })) })));
   assert.ok(groups.length >= 10, `grouped (${groups.map((g) => g.label).join(', ')})`);
   for (const g of groups) {
@@ -624,7 +639,10 @@ test('the first screen: an S² example, a sentence, three steps, examples groupe
       assert.ok(it.title.length > 10, `${g.label}: "${it.text}" has a description`);
     }
   }
-  assert.ok(groups.some((g) => g.label === 'beta') && groups.some((g) => g.label === 'Comparisons'), 'method groups and comparisons');
+  assert.ok(groups.some((g) => g.label === 'Beta spline') && groups.some((g) => g.label === 'Comparisons'), 'method groups (by name) and comparisons');
+  for (const g of groups) assert.doesNotMatch(g.label, /^[a-z]+(-[a-z]+)+$/, `the group "${g.label}" has a readable name`);
+  const methods = await page.$$eval('#new-method option', (os) => os.map((o) => o.textContent));
+  assert.ok(methods.includes('Catmull–Rom') && !methods.includes('catmull-rom'), `the method picker shows names (${methods})`);
   assert.ok((await page.textContent('#preset-about')).length > 10, 'the example says what it shows');
   assert.deepEqual(page.errors, [], 'no page errors');
   await page.close();
@@ -655,7 +673,7 @@ test('undo restores the scene exactly after a drag; redo; reset view; zoom; hove
   assert.equal(await scene(), original, 'undo restores the scene exactly');
   await page.click('#redo');
   assert.equal(await scene(), dragged, 'redo brings the drag back');
-  await page.locator('#overlay').focus().catch(() => {});
+  await page.locator('#overlay').focus();
   await page.evaluate(() => document.activeElement?.blur());
   await page.keyboard.press('Control+z');
   assert.equal(await scene(), original, 'Ctrl+Z undoes');
@@ -677,7 +695,7 @@ test('undo restores the scene exactly after a drag; redo; reset view; zoom; hove
   assert.ok(turned, 'the camera is in the scene');
   await page.mouse.move(box.x + box.width / 2, box.y + box.width / 2);
   await page.mouse.wheel(0, -300);
-  await page.waitForTimeout(300);
+  await page.waitForFunction(() => window.spherekitPage.zoom() > 1.3);
   const zoom = await page.evaluate(() => window.spherekitPage.zoom());
   assert.ok(zoom > 1.3, `the wheel zooms in (${zoom})`);
   assert.ok((await page.evaluate(() => window.spherekitPage.size())) > (await page.evaluate(() => document.getElementById('canvas-wrap').clientWidth)), 'drawn larger than the stage');
@@ -698,7 +716,7 @@ test('undo restores the scene exactly after a drag; redo; reset view; zoom; hove
     }
     send('pointerup', 11, -b);
     send('pointerup', 12, b);
-    await new Promise((res) => setTimeout(res, 250));
+    await new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
     return window.spherekitPage.zoom();
   }, [spread0, spread1]);
   const pinched = await pinch(40, 60);
@@ -798,7 +816,7 @@ test('turning the view draws at reduced resolution, the still frame at full reso
   for (let k = 1; k <= 8; k++) await page.mouse.move(x + 6 * k, y + 2 * k);
   const moving = await width();
   assert.ok(moving < full / 2, `reduced while moving (${moving} of ${full} px)`);
-  await page.waitForTimeout(400);
+  await page.waitForFunction((w) => document.getElementById('scene').width === w, full);
   assert.equal(await width(), full, 'full resolution when the pointer holds still');
   // Back to the start and release: the still frame is the one before the drag, pixel for pixel.
   await page.mouse.move(x, y, { steps: 4 });
@@ -810,28 +828,356 @@ test('turning the view draws at reduced resolution, the still frame at full reso
   await b.close();
 });
 
+/** Where the figure is (the canvas wrapper, the canvas in it) and how far the page scrolls. */
+function figureBox(page) {
+  return page.evaluate(() => {
+    const box = (el) => {
+      const r = el.getBoundingClientRect();
+      return { left: r.left, top: r.top, right: r.right, bottom: r.bottom, width: r.width, height: r.height };
+    };
+    const stage = document.getElementById('stage');
+    return {
+      wrap: box(document.getElementById('canvas-wrap')),
+      canvas: box(document.getElementById('scene')),
+      stage: box(stage),
+      stageScroll: stage.scrollHeight - stage.clientHeight,
+      pageBottom: document.scrollingElement.scrollHeight - scrollY,
+      view: { w: innerWidth, h: innerHeight },
+    };
+  });
+}
+
+/** Clicks time `t` on the first plot (scrolled into the window first on a phone); the page's t. */
+async function clickPlot(page, t) {
+  let [x, y] = await page.evaluate((u) => window.spherekitPage.plotPointOnScreen(u), t);
+  const h = await page.evaluate(() => innerHeight);
+  if (y > h - 10) {
+    await page.evaluate((dy) => window.scrollBy(0, dy), y - h / 2);
+    [x, y] = await page.evaluate((u) => window.spherekitPage.plotPointOnScreen(u), t);
+  }
+  await page.mouse.click(x, y);
+  return page.evaluate(() => window.spherekitPage.t());
+}
+
+test('every example fits: the whole figure at 1400×900, 1024×700 and 390×844, and a plot click lands at its t', async () => {
+  const names = (await readdir(goldenDir)).filter((n) => n.endsWith('.json')).map((n) => n.replace('.json', '')).sort();
+  for (const vp of SIZES) {
+    const page = await newPage(vp);
+    const where = `${vp.width}x${vp.height}`;
+    await openPlayground(page, `${origin}/index.html`);
+    const menu = await page.$$eval('#preset option', (os) => os.map((o) => o.value).filter(Boolean));
+    assert.deepEqual(menu.slice().sort(), names, `${where}: the menu holds every example`);
+    let plots = 0;
+    for (const name of menu) {
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await page.selectOption('#preset', name);
+      const f = await figureBox(page);
+      const at = `${where} ${name}: ${JSON.stringify(f)}`;
+      // The canvas is not clipped by its wrapper, and the wrapper is reachable.
+      assert.ok(f.canvas.height <= f.wrap.height + 1 && f.canvas.width <= f.wrap.width + 1, `${at}: the whole figure is in its frame`);
+      assert.ok(f.wrap.left >= 0 && f.wrap.right <= f.view.w, `${at}: within the width`);
+      if (vp.width > 800) {
+        assert.ok(f.wrap.top >= 0 && f.wrap.bottom <= f.view.h, `${at}: inside the viewport`);
+      } else {
+        assert.ok(f.wrap.bottom <= f.pageBottom + 1, `${at}: inside the page's scrollable area`);
+      }
+      // A click on the plot right after choosing the example lands at the clicked t.
+      const axis = await page.evaluate(() => window.spherekitPage.axis());
+      const hasPlot = await page.evaluate(() => window.spherekitPage.plotPointOnScreen(0) !== null);
+      const wantPlot = await page.evaluate(() => JSON.parse(window.spherekitPage.handle().view_options()).plot !== 'none');
+      assert.equal(hasPlot, wantPlot, `${where} ${name}: the plot axes are known exactly when a plot is drawn`);
+      if (hasPlot) {
+        plots++;
+        const target = axis[0] + 0.37 * (axis[1] - axis[0]);
+        const t = await clickPlot(page, target);
+        assert.ok(Math.abs(t - target) <= 0.015 * (axis[1] - axis[0]), `${where} ${name}: the click lands at t = ${t}, aimed at ${target}`);
+      }
+    }
+    assert.ok(plots > 10, `${where}: ${plots} examples with a plot were clicked`);
+    assert.deepEqual(page.errors, [], `${where}: no page errors`);
+    await page.close();
+  }
+});
+
+test('clamped ends from the form: the end condition and its velocities go together', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const scene = { space: 'S2', method: 'cubic', points: [[1, 0, 0], [0, 1, 0], [0, 0, 1], [-1, 0, 0.2]] };
+  await openPlayground(page, sceneUrl(JSON.stringify(scene)));
+  const params = async () => JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).params ?? {};
+  const start = page.getByLabel('start velocity');
+  // Before: the velocities are disabled, and say why.
+  assert.equal(await start.isDisabled(), true, 'no velocity without clamped ends');
+  assert.match(await start.evaluate((el) => el.closest('label').textContent), /applies with end “clamped”/);
+  // Clamped: the velocities come with it (zero), the select shows what the scene has.
+  await page.getByLabel('end', { exact: true }).selectOption('clamped');
+  assert.equal(await page.textContent('#error'), '', 'no error');
+  assert.deepEqual(await params(), { end: 'clamped', start_velocity: [0, 0, 0], end_velocity: [0, 0, 0] });
+  assert.equal(await page.getByLabel('end', { exact: true }).inputValue(), 'clamped');
+  // Then a velocity typed in (the other order is not offered: disabled until clamped).
+  assert.equal(await start.isDisabled(), false, 'the velocities are enabled with clamped ends');
+  await start.fill('0, 0.5, 0');
+  await start.dispatchEvent('change');
+  assert.equal(await page.textContent('#error'), '');
+  assert.deepEqual((await params()).start_velocity, [0, 0.5, 0]);
+  assert.equal((await params()).end, 'clamped');
+  // Back to natural: the velocities go too.
+  await page.getByLabel('end', { exact: true }).selectOption('natural');
+  assert.deepEqual(await params(), {});
+  assert.equal(await page.textContent('#error'), '');
+  // A closed loop has no ends: the end controls give way to a note.
+  await page.getByLabel('end', { exact: true }).selectOption('clamped');
+  await page.locator('#curves label:has-text("closed loop") input').check();
+  assert.equal(await page.textContent('#error'), '');
+  assert.deepEqual(await params(), {}, 'closing drops the end conditions');
+  assert.equal(await page.getByLabel('end', { exact: true }).count(), 0, 'no end control on a loop');
+  assert.match(await page.textContent('#curves'), /A closed loop has no ends/);
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('the body frame: the ω plot, the readout, and a note where the frames coincide', async () => {
+  const page = await newPage({ width: 1400, height: 900 });
+  const text = await readFile(path.join(goldenDir, 'figure_omega_s3.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  // At t₀ the body is at rest orientation: the note says the frames coincide.
+  assert.equal(await page.isVisible('#frame-note'), true, 'a note at the identity');
+  const [t0, t1] = await page.evaluate(() => window.spherekitPage.axis());
+  await page.evaluate((t) => {
+    const s = document.getElementById('t');
+    s.value = String(t);
+    s.dispatchEvent(new Event('input', { bubbles: true }));
+  }, t0 + 0.4 * (t1 - t0));
+  assert.equal(await page.isVisible('#frame-note'), false, 'no note where the frames differ');
+  const space = (await page.evaluate(() => window.spherekitPage.readouts()))[0];
+  /** The second plot's title band and its plotted values, as pixel sums per row. */
+  const strip = () => page.evaluate(() => {
+    const c = document.getElementById('scene');
+    const p = JSON.parse(window.spherekitPage.handle().plot_axes())[1];
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const band = (y0, y1, x0, x1) => {
+      let sum = 0;
+      for (let y = Math.max(0, Math.floor(y0)); y < Math.min(c.height, y1); y++) for (let x = Math.floor(x0); x < x1; x++) sum += d[4 * (y * c.width + x)];
+      return sum;
+    };
+    const h = p.bottom - p.top;
+    return { title: band(p.top - 0.3 * h, p.top, 0, c.width), values: band(p.top, p.bottom, p.left + 1, p.right) };
+  });
+  const before = await strip();
+  await page.check('input[name=frame][value=body]');
+  assert.equal(await page.textContent('#error'), '');
+  assert.equal(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().scene_json())).view.omega_frame, 'body', 'the frame is the scene\'s');
+  const after = await strip();
+  const f = await figureBox(page);
+  assert.ok(f.wrap.bottom <= f.view.h && f.canvas.height <= f.wrap.height + 1, `the figure still fits (${JSON.stringify(f)})`);
+  assert.notEqual(after.title, before.title, 'the plot title changes (space frame → body frame)');
+  assert.notEqual(after.values, before.values, 'the plotted components change');
+  const body = (await page.evaluate(() => window.spherekitPage.readouts()))[0];
+  assert.match(await page.textContent('#readout'), /ω body/);
+  assert.ok(Math.abs(Math.hypot(...body.omega) - space.speed) < 1e-9, 'the same |ω|');
+  assert.ok(Math.hypot(...body.omega.map((x, k) => x - space.omega[k])) > 1e-3, 'other components');
+  // The link keeps the frame: a fresh load shows the body frame selected.
+  const url = await page.evaluate(() => location.href);
+  const fresh = await newPage({ width: 1400, height: 900 });
+  await openPlayground(fresh, url);
+  assert.equal(await fresh.isChecked('input[name=frame][value=body]'), true);
+  await page.click('#undo');
+  assert.equal(await page.isChecked('input[name=frame][value=space]'), true, 'undo of the frame switch');
+  assert.deepEqual([...page.errors, ...fresh.errors], [], 'no page errors');
+  await fresh.close();
+  await page.close();
+});
+
+/** Whether some pixel within `r` device pixels of (x, y) on the scene canvas has colour `hex`. */
+function hasColorNear(page, [x, y], hex, r = 10) {
+  return page.evaluate(([x, y, hex, r]) => {
+    const c = document.getElementById('scene');
+    const b = c.getBoundingClientRect();
+    const k = c.width / b.width;
+    const [cx, cy] = [(x - b.left) * k, (y - b.top) * k];
+    const want = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+    const d = c.getContext('2d').getImageData(Math.round(cx - r), Math.round(cy - r), 2 * r, 2 * r).data;
+    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - want[0]) + Math.abs(d[i + 1] - want[1]) + Math.abs(d[i + 2] - want[2]) < 30) return true;
+    return false;
+  }, [x, y, hex, r]);
+}
+
+test('compare with another method: shared keys, the same times and loop, a key marker per curve', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const scene = { space: 'S2', method: 'cubic', points: [[1, 0, 0.2], [0.3, 1, 0.5], [-0.5, 0.3, 1], [-1, -0.6, 0.1], [-0.2, -1, -0.6]], knots: [0, 1, 3, 4, 6] };
+  await openPlayground(page, sceneUrl(JSON.stringify(scene)));
+  const curve = async (c) => JSON.parse(await page.evaluate((k) => window.spherekitPage.handle().curve_json(k), c));
+  await page.selectOption('#new-method', 'catmull-rom');
+  await page.click('#add-curve');
+  assert.equal(await page.textContent('#error'), '');
+  const [a, b] = [await curve(0), await curve(1)];
+  assert.deepEqual(b.points, a.points, 'the same keys');
+  assert.deepEqual(b.knots, [1, 3, 4], 'the inner keys keep their times (Catmull–Rom has no knots at its end points)');
+  assert.deepEqual([a.label, b.label], ['Cubic spline', 'Catmull–Rom'], 'the legend says which is which');
+  // Each curve's keys in its own colour: at a shared key both colours show.
+  const colors = JSON.parse(await page.evaluate(() => window.spherekitPage.handle().colors()));
+  const key = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 2));
+  for (const c of colors) assert.ok(await hasColorNear(page, key, c), `a marker in ${c} at the shared key`);
+  // A drag moves the key of both curves.
+  const [x, y] = key;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let k = 1; k <= 8; k++) await page.mouse.move(x + 4 * k, y + 3 * k);
+  await page.mouse.up();
+  const [a2, b2] = [await curve(0), await curve(1)];
+  assert.notDeepEqual(a2.points[2], a.points[2], 'the key moved');
+  assert.deepEqual(b2.points, a2.points, 'both curves moved together');
+  await page.click('#undo');
+  assert.deepEqual((await curve(1)).points, a.points, 'one undo puts both back');
+  // A double-click on empty sphere adds a point to both; a single click adds nothing.
+  const spot = await page.evaluate(() => window.spherekitPage.emptySpot());
+  await page.mouse.click(...spot);
+  assert.equal((await curve(0)).points.length, 5, 'a single click adds no point');
+  await page.mouse.dblclick(...spot);
+  assert.equal((await curve(0)).points.length, 6, 'a double-click adds a point');
+  assert.deepEqual((await curve(1)).points, (await curve(0)).points, 'to both curves');
+  await page.click('#undo');
+  // Closing the cubic's loop keeps every key's time and says when it returns to the first.
+  await page.locator('#curves .curve').first().locator('label:has-text("closed loop") input').check();
+  assert.equal(await page.textContent('#error'), '');
+  assert.deepEqual((await curve(0)).knots, [0, 1, 3, 4, 6, 7.5], 'the knots stay, and the return comes one mean spacing later');
+  assert.match(await page.textContent('#curves .curve .note'), /keeps its time.*t = 7\.5/);
+  // Comparing a closed curve gives a closed curve.
+  await page.locator('#curves .curve').first().click();
+  await page.selectOption('#new-method', 'geodesic');
+  await page.click('#add-curve');
+  const g = await curve(2);
+  assert.equal(g.closed, true, 'the loop setting is copied');
+  assert.deepEqual(g.knots, [0, 1, 3, 4, 6, 7.5], 'and the times');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('keyboard only: reach the sphere, select a point, move it, undo, turn the view, delete', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const text = await readFile(path.join(goldenDir, 'geodesic_s2.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  const scene = () => page.evaluate(() => window.spherekitPage.handle().scene_json());
+  const original = await scene();
+  let reached = false;
+  for (let k = 0; k < 40 && !reached; k++) {
+    await page.keyboard.press('Tab');
+    reached = await page.evaluate(() => document.activeElement?.id === 'overlay');
+  }
+  assert.ok(reached, 'Tab reaches the sphere');
+  assert.notEqual(await page.evaluate(() => getComputedStyle(document.getElementById('canvas-wrap')).outlineStyle), 'none', 'a visible focus ring');
+  assert.equal(await page.isVisible('#keys-hint'), true, 'the keys are explained while the sphere has focus');
+  await page.keyboard.press('Tab');
+  assert.equal(await page.textContent('#point-editor p'), 'curve 1, point 1', 'Tab selects the first point');
+  await page.keyboard.press('Tab');
+  assert.equal(await page.textContent('#point-editor p'), 'curve 1, point 2', 'and the next');
+  assert.equal(await page.evaluate(() => document.activeElement?.id), 'overlay', 'focus stays on the sphere');
+  const before = await page.evaluate(() => Array.from(window.spherekitPage.handle().point(0, 1)));
+  for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowRight');
+  const moved = await page.evaluate(() => Array.from(window.spherekitPage.handle().point(0, 1)));
+  assert.ok(Math.hypot(...moved.map((v, k) => v - before[k])) > 0.01, 'the arrows move the point');
+  for (let k = 0; k < 3; k++) await page.keyboard.press('Control+z');
+  assert.equal(await scene(), original, 'undo restores the scene exactly');
+  await page.keyboard.press('Escape');
+  assert.match(await page.textContent('#point-editor p'), /Click a point/, 'Escape deselects');
+  await page.keyboard.press('ArrowLeft');
+  const camera = JSON.parse(await scene()).view?.camera;
+  assert.ok(Array.isArray(camera), 'an arrow without a selection turns the view');
+  await page.keyboard.press('Tab');
+  const count = JSON.parse(await scene()).points.length;
+  await page.keyboard.press('Delete');
+  assert.equal(JSON.parse(await scene()).points.length, count - 1, 'Delete removes the selected point');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('a shared link keeps t and zoom', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const text = await readFile(path.join(goldenDir, 'cubic_s2.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  const [t0, t1] = await page.evaluate(() => window.spherekitPage.axis());
+  const t = t0 + 0.6 * (t1 - t0);
+  await page.evaluate((u) => {
+    const s = document.getElementById('t');
+    s.value = String(u);
+    s.dispatchEvent(new Event('input', { bubbles: true }));
+  }, t);
+  await page.focus('#overlay');
+  await page.keyboard.press('+');
+  await page.keyboard.press('+');
+  const zoom = await page.evaluate(() => window.spherekitPage.zoom());
+  assert.ok(zoom > 1.2, `zoomed in (${zoom})`);
+  await page.waitForFunction(() => /^#t=[^&]+&zoom=[^&]+&scene=/.test(location.hash));
+  const url = await page.evaluate(() => location.href);
+  const fresh = await newPage({ width: 1280, height: 860 });
+  await openPlayground(fresh, url);
+  assert.ok(Math.abs((await fresh.evaluate(() => window.spherekitPage.t())) - t) < 1e-4, 'the same t');
+  assert.ok(Math.abs((await fresh.evaluate(() => window.spherekitPage.zoom())) - zoom) < 1e-3, 'the same zoom');
+  assert.equal(await fresh.evaluate(() => window.spherekitPage.handle().scene_json()), await page.evaluate(() => window.spherekitPage.handle().scene_json()), 'the same scene');
+  assert.equal(await fresh.inputValue('#preset'), 'cubic_s2', 'the example is named, not "your scene"');
+  assert.deepEqual([...page.errors, ...fresh.errors], [], 'no page errors');
+  await fresh.close();
+  await page.close();
+});
+
+test('"New" starts again from the fewest points of the method, undoably', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  const text = await readFile(path.join(goldenDir, 'squad_s3.json'), 'utf8');
+  await openPlayground(page, sceneUrl(text));
+  const before = await page.evaluate(() => window.spherekitPage.handle().scene_json());
+  await page.click('#new-scene');
+  assert.equal(await page.textContent('#error'), '');
+  const fresh = JSON.parse(await page.evaluate(() => window.spherekitPage.handle().scene_json()));
+  const min = await page.evaluate(() => JSON.parse(window.spherekitPage.handle().curve_json(0)).points.length);
+  assert.equal(fresh.space, 'S3');
+  assert.equal(fresh.method, 'squad');
+  const need = await page.evaluate(async () => {
+    const sk = await import('./pkg/spherekit_wasm.js');
+    return Math.max(2, JSON.parse(sk.methods()).find((m) => m.id === 'squad').min_points);
+  });
+  assert.equal(min, need, 'the fewest points squad takes');
+  assert.ok(min >= 2 && min < JSON.parse(before).points.length, `${min} points`);
+  await page.click('#undo');
+  assert.equal(await page.evaluate(() => window.spherekitPage.handle().scene_json()), before, 'undo brings the scene back');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
 test('screenshots at 1400×900, 1024×700 and 390×844, device pixel ratio 1 and 2', async () => {
   const s3 = await readFile(path.join(goldenDir, 'compare_s3_squad_catmull_bspline_arcblend.json'), 'utf8');
+  const b = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
   for (const dpr of [1, 2]) {
-    const context = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
     for (const vp of SIZES) {
-      const ctx = await context.newContext({ viewport: vp, deviceScaleFactor: dpr });
+      const where = `${vp.width}x${vp.height} DPR ${dpr}`;
+      const ctx = await b.newContext({ viewport: vp, deviceScaleFactor: dpr });
       const page = await ctx.newPage();
       const errors = [];
       page.on('pageerror', (e) => errors.push(String(e)));
       await openPlayground(page, `${origin}/index.html`);
+      const canvas = await page.evaluate(() => ({ w: document.getElementById('scene').width, css: document.getElementById('scene').getBoundingClientRect().width }));
+      assert.ok(Math.abs(canvas.w - canvas.css * dpr) <= 2, `${where}: the canvas has ${dpr} device pixels per CSS pixel (${JSON.stringify(canvas)})`);
       await page.screenshot({ path: path.join(outDir, `playground-${vp.width}x${vp.height}-dpr${dpr}.png`) });
       await openPlayground(page, sceneUrl(s3));
-      const [px, py] = await page.evaluate(() => window.spherekitPage.plotPointOnScreen(1.7) ?? [0, 0]);
-      if (px) await page.mouse.click(px, py);
+      const f = await figureBox(page);
+      if (vp.width > 800) assert.ok(f.wrap.bottom <= f.view.h, `${where}: the figure is inside the viewport (${f.wrap.bottom})`);
+      const t = await clickPlot(page, 1.7);
+      assert.ok(Math.abs(t - 1.7) < 0.2, `${where}: the plot click sets t (${t})`);
       await page.screenshot({ path: path.join(outDir, `playground-s3-${vp.width}x${vp.height}-dpr${dpr}.png`) });
-      assert.deepEqual(errors, [], `no page errors at ${vp.width}x${vp.height} DPR ${dpr}`);
+      assert.deepEqual(errors, [], `no page errors at ${where}`);
       await ctx.close();
     }
-    await context.close();
   }
+  await b.close();
 });
 
-test('the playground loads nothing from other origins', () => {
-  assert.deepEqual(externalRequests, []);
+test('the playground and the gallery load nothing from other origins', async () => {
+  const page = await browser.newPage();
+  const requests = [];
+  page.on('request', (r) => requests.push(r.url()));
+  await openPlayground(page, `${origin}/index.html`);
+  await page.goto(`${origin}/docs.html`);
+  await page.waitForFunction(() => [...document.querySelectorAll('spherekit-view')].every((w) => w.dataset.state === 'ready'));
+  const own = requests.filter((u) => u.startsWith(`${origin}/`));
+  assert.ok(own.some((u) => u.endsWith('.wasm')) && own.some((u) => u.endsWith('presets.json')), `the pages' own files were requested (${own.length})`);
+  assert.deepEqual(requests.filter((u) => !u.startsWith(`${origin}/`) && !u.startsWith('data:') && !u.startsWith('blob:')), []);
+  await page.close();
 });

@@ -13,16 +13,19 @@
 //   animation.js  play and the t slider
 //   bench.js      ?bench only
 import init, * as sk from '../pkg/spherekit_wasm.js';
-import { $, state, query, showError, attempt, controlOf, methodOf } from './state.js';
+import { $, state, query, showError, attempt, commit, controlOf, methodOf } from './state.js';
 import { redraw, drawNow, pointOnCanvas, keyAxisOnScreen, plotX, frameTimes } from './view.js';
-import { changed, pretty, renderPanels, setTime } from './panels.js';
+import { changed, compareWith, pageLink, pretty, renderPanels } from './panels.js';
 import { installPointer, moveTimes } from './pointer.js';
 import { installAnimation, setPlaying } from './animation.js';
 import { FIRST, exampleGroups } from './examples.js';
 
-/** Shows scene `text` (a new scene: t goes back to the start of its time axis). A failure
- * shows its message beside `anchor` (or over the stage) and keeps the last good scene. */
-function loadScene(text, { anchor = null } = {}) {
+/** Shows scene `text` (a new scene: t goes back to the start of its time axis, or to `t`, and
+ * the zoom to 1, or to `zoom`, from a shared link). A failure shows its message beside
+ * `anchor` (or over the stage) and keeps the last good scene. The new frame is drawn before
+ * this returns, so the figure's layout is final at once (a click right after lands where it
+ * aims). */
+function loadScene(text, { anchor = null, t = null, zoom = 1 } = {}) {
   let ok;
   if (!state.pg) {
     try {
@@ -40,25 +43,56 @@ function loadScene(text, { anchor = null } = {}) {
     state.selected = null;
     state.hover = null;
     state.activeCurve = 0;
-    state.zoom = 1;
+    state.zoom = Math.min(2.5, Math.max(0.5, Number.isFinite(zoom) ? zoom : 1));
     setPlaying(false);
     state.axis = Array.from(state.pg.time_axis());
-    state.t = state.axis[0];
+    state.t = Number.isFinite(t) ? Math.min(state.axis[1], Math.max(state.axis[0], t)) : state.axis[0];
     changed();
+    drawNow();
   } else if (state.pg) {
     redraw();
   }
   return ok;
 }
 
-function sceneFromHash() {
-  const m = location.hash.match(/^#scene=(.*)$/s);
+/** The link's fragment, `#t=…&zoom=…&scene=…` (t and zoom optional, the scene last):
+ * `{ scene, t, zoom }`, or null without a scene. */
+function linkFromHash() {
+  const m = location.hash.match(/^#((?:[a-z]+=[^&]*&)*)scene=(.*)$/s);
   if (!m) return null;
+  const opts = Object.fromEntries(m[1].split('&').filter(Boolean).map((kv) => kv.split('=')));
+  let scene;
   try {
-    return decodeURIComponent(m[1]);
+    scene = decodeURIComponent(m[2]);
   } catch {
-    return m[1];
+    scene = m[2];
   }
+  return { scene, t: opts.t === undefined ? null : Number(opts.t), zoom: opts.zoom === undefined ? 1 : Number(opts.zoom) };
+}
+
+/**
+ * A new scene of the current space with the active curve's method: the fewest points it takes
+ * (two at least), a quarter turn apart along a great circle (S³: turns about the z axis).
+ */
+function newScene() {
+  const pg = state.pg;
+  const space = pg.space();
+  const curve = JSON.parse(pg.curve_json(Math.min(state.activeCurve, pg.curve_count() - 1)));
+  const method = methodOf(curve.method);
+  const n = Math.max(2, method?.min_points ?? 2);
+  const points = [];
+  for (let k = 0; k < n; k++) {
+    const a = (k * Math.PI) / 4;
+    if (space === 'S3') points.push([Math.cos(a / 2), 0, 0, Math.sin(a / 2)].map((x) => Number(x.toFixed(4))));
+    else {
+      const dim = curve.points[0].length;
+      const p = new Array(dim).fill(0);
+      p[0] = Number(Math.cos(a).toFixed(4));
+      p[1] = Number(Math.sin(a).toFixed(4));
+      points.push(p);
+    }
+  }
+  return JSON.stringify({ space, method: curve.method, points });
 }
 
 /** The example menu: one group per method, readable names, the description on hover and below. */
@@ -66,7 +100,7 @@ function fillPresets() {
   const preset = $('preset');
   const custom = document.createElement('option');
   custom.value = '';
-  custom.textContent = '(your scene)';
+  custom.textContent = 'Your scene';
   custom.disabled = true;
   preset.append(custom);
   state.groups = exampleGroups(state.presets, methodOf);
@@ -89,8 +123,15 @@ function fillPresets() {
 /** The Scene section: JSON box, download, link, view toggles, the curve adder. */
 function installScenePanel() {
   window.addEventListener('hashchange', () => {
-    const text = sceneFromHash();
-    if (text && text !== state.pg.scene_json()) loadScene(text);
+    const link = linkFromHash();
+    if (link && link.scene !== state.pg.scene_json()) loadScene(link.scene, link);
+  });
+  $('new-scene').addEventListener('click', () => {
+    const before = state.pg.scene_json();
+    if (loadScene(newScene(), { anchor: $('new-scene').closest('.row') })) {
+      commit(before);
+      changed();
+    }
   });
   $('apply-json').addEventListener('click', () => loadScene($('json').value, { anchor: $('json-actions') }));
   $('download').addEventListener('click', () => {
@@ -103,19 +144,14 @@ function installScenePanel() {
   });
   $('copy-link').addEventListener('click', async () => {
     try {
-      await navigator.clipboard.writeText(location.href);
+      await navigator.clipboard.writeText(new URL(pageLink(), location.href).href);
       $('copy-link').textContent = 'Copied';
     } catch {
       $('copy-link').textContent = 'Link is in the address bar';
     }
     setTimeout(() => { $('copy-link').textContent = 'Copy link'; }, 1500);
   });
-  $('add-curve').addEventListener('click', () => {
-    if (attempt(() => state.pg.add_curve($('new-method').value), { anchor: $('add-curve').closest('.row') })) {
-      state.activeCurve = state.pg.curve_count() - 1;
-      changed();
-    }
-  });
+  $('add-curve').addEventListener('click', () => compareWith($('new-method').value));
   $('plot').addEventListener('change', () => {
     if (attempt(() => state.pg.set_view('plot', JSON.stringify($('plot').checked ? 'speed' : 'none')), { anchor: controlOf($('plot')) })) changed();
   });
@@ -133,10 +169,12 @@ function installScenePanel() {
   $('frames').addEventListener('change', () => {
     if (attempt(() => state.pg.set_view('frames', $('frames').checked ? '7' : 'null'), { anchor: controlOf($('frames')) })) changed();
   });
+  // The frame of ω is the scene's (view.omega_frame): the plot, the readout and the link follow.
   for (const radio of document.querySelectorAll('input[name=frame]')) {
     radio.addEventListener('change', () => {
-      state.frame = radio.value;
-      setTime(state.t);
+      const value = radio.value === 'body' ? '"body"' : 'null';
+      if (attempt(() => state.pg.set_view('omega_frame', value), { anchor: $('frame-choice') })) changed();
+      else renderPanels();
     });
   }
   window.addEventListener('resize', () => redraw());
@@ -159,8 +197,9 @@ async function main() {
   state.presets = await presets.json();
   fillPresets();
   const fallback = state.presets.find((p) => p.name === FIRST) ?? state.presets[0];
-  const fromHash = sceneFromHash();
-  if (!fromHash || !loadScene(fromHash)) {
+  const link = linkFromHash();
+  const fromHash = link?.scene;
+  if (!fromHash || !loadScene(fromHash, link)) {
     const error = $('error').textContent;
     loadScene(fallback.scene);
     if (fromHash) showError(error.replace(/^error: /, ''));

@@ -32,9 +32,17 @@ const EXAMPLES = {
   arc_blend_s3: ['Blended arcs of orientations', 'The arc blend on S³, order 3, with body frames.'],
   corner_blend_s2_fig_8_5: ['Pobegailo’s corner blend (S²)', 'Great-circle arcs with their corners rounded off (order 2).'],
   corner_blend_s3: ['Corner blend of orientations', 'Slerp with rounded corners at the keys.'],
-  cubic_s2: ['Cubic spline (S²)', 'A C² spline through five points at their times.'],
+  cubic_s2: ['Cubic spline (S²)', 'A C² spline through five points, each reached at its own time (the knots).'],
   cubic_s3: ['Cubic rotation spline (scipy ends)', 'The C² rotation spline with scipy’s RotationSpline end conditions.'],
-  cubic_s3_closed: ['Closed cubic rotation spline', 'A periodic C² loop through four orientations.'],
+  cubic_s3_closed: ['Closed cubic rotation spline', 'A periodic C² loop through four tilts of the body: its z axis circles round, turning at a steady rate. (A traced axis tip may turn sharply where the body spins about that axis, although the rotation itself is C².)'],
+  closed_loops_s2: ['Closed loops (S²)', 'Great-circle arcs, Catmull–Rom and a Beta spline through the same five points, each closed into a loop.'],
+  closed_loops_s3: ['Closed loops of orientations', 'Squad, Kim’s B-spline and the Gamma spline, each a loop through the same four keys.'],
+  compare_catmull_rom_nlerp_s2: ['Catmull–Rom by slerps and normalised (S²)', 'The same points: the slerp pyramid keeps an even pace, the normalised Euclidean one speeds up and slows down; great-circle arcs for reference.'],
+  compare_catmull_rom_nlerp_s3: ['Catmull–Rom by slerps and normalised (S³)', 'The same keys on S³: compare the speed plots of the two Catmull–Rom constructions.'],
+  corner_blend_s2_fig_8_1_small_circles: ['Corner blend on small circles', 'Legs along small circles (bend), two blend orders and cut-backs, as in Pobegailo’s figure 8.1.'],
+  corner_blend_s2_fig_8_4_cuts: ['Corner blend with uneven cuts', 'Each corner cut back by its own amount on each side, after a slow start.'],
+  figure_arclength_s2: ['Constant speed (S²)', 'A Catmull–Rom curve and the same curve at unit speed: the plot shows the difference.'],
+  figure_arclength_s3: ['Constant angular speed', 'Squad and the same squad reparametrised by arc length (|ω| = 1).'],
   cubic_s3_orbit: ['A 360° camera orbit', 'Eight keys 45° of yaw apart with a pitch wobble, closed: one full turn is a loop of rotations (its quaternions end at −q₀, the same rotation), turning at a steady rate all the way round.'],
   compare_s3_squad_catmull_bspline_arcblend: ['Four S³ methods compared', 'Squad, Catmull–Rom, Kim’s B-spline and the arc blend through the same keys.'],
   figure_legend_labels_s2: ['Curve labels in the legend', 'Three methods through the same points, labelled.'],
@@ -57,15 +65,15 @@ function fileLabel(name) {
 
 /**
  * The examples as menu groups `[{ group, items: [{ name, label, about, space }] }]`: one group
- * per method (a scene with several methods goes to "Comparisons", the figure options to
- * "Figure options"), S² scenes first within a group.
+ * per method, named as the registry names it (a scene with several methods goes to
+ * "Comparisons", the figure options to "Figure options"), S² scenes first within a group.
  */
 export function exampleGroups(presets, methodOf) {
   const groups = new Map();
   for (const p of presets) {
     const scene = JSON.parse(p.scene);
     const methods = [...new Set((scene.curves ?? [scene]).map((c) => c.method ?? scene.method))];
-    const group = p.name.startsWith('figure_') ? 'Figure options' : methods.length > 1 ? 'Comparisons' : methods[0];
+    const group = p.name.startsWith('figure_') ? 'Figure options' : methods.length > 1 ? 'Comparisons' : methodOf(methods[0])?.name ?? methods[0];
     const [label, about] = EXAMPLES[p.name] ?? [fileLabel(p.name), methodOf(methods[0])?.summary ?? ''];
     if (!groups.has(group)) groups.set(group, []);
     groups.get(group).push({ name: p.name, label, about, space: scene.space });

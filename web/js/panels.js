@@ -4,8 +4,27 @@
 import * as sk from '../pkg/spherekit_wasm.js';
 import { $, state, attempt, commit, controlOf, hooks, parkNotice, placeNotice, showError, inSpaces, methodOf, updateHistoryButtons } from './state.js';
 import { viewOptions, redraw, drawOverlay } from './view.js';
-import { curveControls } from './controls.js';
+import { curveControls, knotsFor } from './controls.js';
 import { aboutExample } from './examples.js';
+import { sharing, setKey, removeKey } from './keys.js';
+
+/** A note a curve card shows after an edit (what became of the knots), until the next edit. */
+let cardNote = null;
+
+/** The page's address for the current scene, t and zoom (`#t=…&zoom=…&scene=…`; the scene
+ * last, as boot.js reads it). */
+export function pageLink() {
+  const t = state.t === state.axis[0] ? '' : `t=${Number(state.t.toPrecision(6))}&`;
+  const zoom = state.zoom === 1 ? '' : `zoom=${Number(state.zoom.toPrecision(4))}&`;
+  return `${location.pathname}${location.search}#${t}${zoom}scene=${encodeURIComponent(state.pg.scene_json())}`;
+}
+
+/** Puts t and zoom into the address soon (not on every animation frame). */
+let linkTimer = 0;
+export function linkSoon() {
+  clearTimeout(linkTimer);
+  linkTimer = setTimeout(() => history.replaceState(null, '', pageLink()), 300);
+}
 
 /**
  * After any successful change: the time axis, the panels, URL fragment, JSON box, table and
@@ -16,11 +35,11 @@ export function changed({ panels = true, light = false } = {}) {
   syncTime();
   if (!light) {
     const text = state.pg.scene_json();
-    history.replaceState(null, '', `${location.pathname}${location.search}#scene=${encodeURIComponent(text)}`);
+    history.replaceState(null, '', pageLink());
     if (document.activeElement !== $('json')) $('json').value = pretty(text);
     const preset = state.presets.find((p) => p.scene.trim() === text || sameScene(p.scene, text));
     $('preset').value = preset ? preset.name : '';
-    $('preset-about').textContent = preset ? aboutExample(state.groups, preset.name) : 'Your own scene (edited).';
+    $('preset-about').textContent = preset ? aboutExample(state.groups, preset.name) : 'Your own scene: an edited example, a shared link or a pasted scene.';
     renderContinuity();
   }
   if (panels) renderPanels();
@@ -61,6 +80,7 @@ export function setTime(t) {
   $('t-out').textContent = `${state.axis[2] ? 'u' : 't'} = ${state.t.toFixed(3)}`;
   renderReadout();
   drawOverlay();
+  if (!state.playing) linkSoon();
 }
 
 /** Undo (`-1`) or redo (`+1`): the scene text before or after the edit, exactly. */
@@ -102,7 +122,21 @@ function sameScene(a, b) {
   }
 }
 
+/** Whether the panels are being redrawn (a control removed while it has focus may fire its
+ * change event again, in the middle of the redraw: that redraw is this one). */
+let rendering = false;
+
 export function renderPanels() {
+  if (rendering) return;
+  rendering = true;
+  try {
+    drawPanels();
+  } finally {
+    rendering = false;
+  }
+}
+
+function drawPanels() {
   parkNotice();
   const pg = state.pg;
   const space = pg.space();
@@ -120,11 +154,13 @@ export function renderPanels() {
   const box = $('curves');
   box.replaceChildren();
   for (let c = 0; c < pg.curve_count(); c++) box.append(curveCard(c, colors[c], space));
+  cardNote = null;
   const adder = $('new-method');
   const chosen = adder.value;
   adder.replaceWith(methodSelect(space, chosen || null, 'new-method'));
-  $('new-method').setAttribute('aria-label', 'Method of the new curve');
+  $('new-method').setAttribute('aria-label', 'Method to compare with');
   $('frame-choice').hidden = space !== 'S3';
+  for (const radio of document.querySelectorAll('input[name=frame]')) radio.checked = radio.value === view.omega_frame;
   renderPointEditor();
   placeNotice(); // a failed control's message goes back beside the redrawn control
 }
@@ -140,13 +176,23 @@ function curveCard(c, color, space) {
   const swatch = document.createElement('span');
   swatch.className = 'swatch';
   swatch.style.background = color;
-  swatch.title = `curve ${c}`;
+  swatch.title = `curve ${c + 1}`;
   const select = methodSelect(space, curve.method);
-  select.setAttribute('aria-label', `Method of curve ${c}`);
+  select.setAttribute('aria-label', `Method of curve ${c + 1}`);
   head.dataset.key = `c${c}-method`;
   select.addEventListener('change', () => {
-    // Rust keeps the parameters and knots the new method can take.
-    if (attempt(() => pg.set_method(c, select.value), { anchor: head })) changed();
+    // Rust keeps the parameters and knots the new method can take; a legend label that was
+    // the old method's name follows the method.
+    const relabel = curve.label !== undefined && curve.label === method?.name;
+    if (attempt(() => {
+      pg.set_method(c, select.value);
+      if (relabel) {
+        const fields = JSON.parse(pg.curve_json(c));
+        delete fields.points;
+        fields.label = methodOf(select.value)?.name ?? select.value;
+        pg.set_curve(c, JSON.stringify(fields));
+      }
+    }, { anchor: head })) changed();
     else renderPanels();
   });
   head.append(swatch, select);
@@ -154,7 +200,7 @@ function curveCard(c, color, space) {
     const remove = document.createElement('button');
     remove.type = 'button';
     remove.textContent = '✕';
-    remove.title = `Remove curve ${c}`;
+    remove.title = `Remove curve ${c + 1}`;
     remove.addEventListener('click', () => {
       if (attempt(() => pg.remove_curve(c), { anchor: head })) {
         state.activeCurve = 0;
@@ -170,22 +216,98 @@ function curveCard(c, color, space) {
       state.activeCurve = c;
       for (const el of $('curves').children) el.classList.remove('active');
       card.classList.add('active');
+      drawOverlay(); // its ω arrow
     }
   });
   const p = document.createElement('p');
   p.className = 'muted';
   p.textContent = method?.summary ?? '';
   card.append(p);
+  const shared = sharing(c).length - 1;
+  if (shared) {
+    const q = document.createElement('p');
+    q.className = 'muted';
+    q.textContent = `Shares its keys with ${shared === 1 ? 'another curve' : `${shared} other curves`}: moving, adding or deleting a key changes them all.`;
+    card.append(q);
+  }
   const controls = curveControls(c, curve, space, method, {
     param: (name, value, opts) => setParam(c, name, value, opts),
     field: (name, value) => setCurveField(c, curve, { [name]: value }),
-    fields: (changes) => setCurveField(c, curve, changes),
-    error: (message) => showError(message, { anchor: eventControl() }),
+    fields: (changes, note) => setCurveField(c, curve, changes, note),
+    params: (changes) => {
+      const params = { ...(curve.params ?? {}) };
+      for (const [name, value] of Object.entries(changes)) {
+        if (value === null) delete params[name];
+        else params[name] = value;
+      }
+      setCurveField(c, curve, { params: Object.keys(params).length ? params : null });
+    },
+    error: (message, lead) => showError(message, { anchor: eventControl(), lead }),
   });
   // Keys find a control again after the panel is redrawn (the notice goes back beside it).
   controls.forEach((el, k) => { el.dataset.key = `c${c}-${k}`; });
   card.append(...controls);
+  if (cardNote?.curve === c) {
+    const note = document.createElement('p');
+    note.className = 'note';
+    note.textContent = cardNote.text;
+    card.append(note);
+  }
   return card;
+}
+
+/**
+ * "Compare with…": a curve of `method` on the same keys as the active curve (shared: a drag
+ * moves both), with its times (the knots, as far as the method takes knots) and its loop
+ * setting; each curve labelled with its method's name for the legend.
+ */
+export function compareWith(id) {
+  const pg = state.pg;
+  const c = Math.min(state.activeCurve, pg.curve_count() - 1);
+  const base = JSON.parse(pg.curve_json(c));
+  const from = methodOf(base.method);
+  const to = methodOf(id);
+  const n = base.points.length;
+  const closed = Boolean(base.closed) && Boolean(to?.closes);
+  const knots = knotsFor(to, from?.knots?.skip ?? 0, base.knots, n, closed);
+  const anchor = $('add-curve').closest('.row');
+  const ok = attempt(() => {
+    const before = pg.scene_json();
+    try {
+      if (base.label === undefined && pg.curve_count() === 1) {
+        const fields = { ...base, label: from?.name ?? base.method };
+        delete fields.points;
+        pg.set_curve(c, JSON.stringify(fields));
+      }
+      pg.add_curve(id);
+      const k = pg.curve_count() - 1;
+      // add_curve takes curve 1's points; the active curve's replace them.
+      const points = JSON.parse(pg.curve_json(k)).points;
+      if (JSON.stringify(points) !== JSON.stringify(base.points)) {
+        for (let i = 0; i < n; i++) {
+          const p = new Float64Array(pg.point(c, i));
+          if (i < points.length) pg.set_point(k, i, p);
+          else pg.insert_point(k, i, p);
+        }
+        for (let i = points.length - 1; i >= n; i--) pg.remove_point(k, i);
+      }
+      const fields = { method: id, label: to?.name ?? id };
+      if (closed) fields.closed = true;
+      if (knots) fields.knots = knots;
+      pg.set_curve(k, JSON.stringify(fields));
+    } catch (e) {
+      pg.set_scene(before);
+      throw e;
+    }
+  }, { anchor });
+  if (ok) {
+    state.activeCurve = pg.curve_count() - 1;
+    const lost = [];
+    if (base.knots && !knots) lost.push(to?.knots === 'computed' ? 'it computes its own times, so the keys’ times are not used' : 'it takes no knots');
+    if (base.closed && !closed) lost.push('it has no closed form, so it is open');
+    if (lost.length) cardNote = { curve: state.activeCurve, text: `${to?.name ?? id}: ${lost.join('; ')}.` };
+    changed();
+  }
 }
 
 /** The panel control of the event being handled (the one the user acted on), or null. */
@@ -197,7 +319,8 @@ function eventControl() {
 let liveBefore = null;
 
 /** Sets a parameter (null removes it) and redraws; the panels follow unless `live`. A value
- * the curve cannot take leaves the control where it is, marked, with the message beside it. */
+ * the curve cannot take is marked while the slider moves; on release the control goes back
+ * to the scene's value, with the message beside it. */
 function setParam(c, name, value, { live = false } = {}) {
   const anchor = eventControl();
   if (liveBefore === null) liveBefore = state.pg.scene_json();
@@ -208,18 +331,27 @@ function setParam(c, name, value, { live = false } = {}) {
     commit(before);
   }
   if (ok) changed({ panels: !live, light: live });
+  else if (!live) {
+    changed(); // the scene as it was before the slider moved, and every control with it
+  }
 }
 
 /** Replaces fields of curve `c` (`{ name: value }`, null removes one), keeping its points and
- * other fields. */
-function setCurveField(c, curve, changes) {
+ * other fields; `note` is shown on the card afterwards. A refused change puts the controls
+ * back to the scene's values, the message beside the control. */
+function setCurveField(c, curve, changes, note = null) {
   const fields = { ...curve };
   delete fields.points;
   for (const [name, value] of Object.entries(changes)) {
     if (value === null) delete fields[name];
     else fields[name] = value;
   }
-  if (attempt(() => state.pg.set_curve(c, JSON.stringify(fields)), { anchor: eventControl() })) changed();
+  if (attempt(() => state.pg.set_curve(c, JSON.stringify(fields)), { anchor: eventControl() })) {
+    cardNote = note ? { curve: c, text: note } : null;
+    changed();
+  } else {
+    renderPanels();
+  }
 }
 
 /** A select of every method, those the space cannot take disabled. */
@@ -229,9 +361,9 @@ function methodSelect(space, value, id) {
   for (const m of state.methods) {
     const opt = document.createElement('option');
     opt.value = m.id;
-    opt.textContent = m.id;
+    opt.textContent = m.name;
     opt.disabled = !inSpaces(m.spaces, space);
-    opt.title = `${m.summary} — ${m.spaces.join(', ')}`;
+    opt.title = `${m.summary} — ${m.spaces.join(', ')} (id "${m.id}")`;
     select.append(opt);
   }
   if (value) select.value = value;
@@ -250,15 +382,19 @@ export function renderPointEditor() {
     const p = document.createElement('p');
     p.className = 'muted';
     p.textContent = state.pg.space() === 'S3'
-      ? 'Click an axis tip of a key to select it; drag to rotate it.'
-      : 'Click a point to select it; drag to move it.';
+      ? 'Click an axis tip of a key (or Tab to it on the sphere) to select it; drag it, or use the arrow keys, to turn it.'
+      : 'Click a point (or Tab to it on the sphere) to select it; drag it, or use the arrow keys, to move it.';
     box.append(p);
+    $('point-section').classList.remove('selected');
     return;
   }
+  $('point-section').classList.add('selected');
   const [c, i] = state.selected;
   const q = state.pg.point(c, i);
+  const linked = sharing(c);
   const title = document.createElement('p');
-  title.textContent = `curve ${c}, point ${i}`;
+  title.textContent = `curve ${c + 1}, point ${i + 1}`;
+  if (linked.length > 1) title.textContent += ` (shared by curves ${linked.map((k) => k + 1).sort((a, b) => a - b).join(', ')})`;
   box.append(title);
   const names = q.length === 4 ? ['w', 'x', 'y', 'z'] : q.length === 3 ? ['x', 'y', 'z'] : q.map((_, k) => `x${k}`);
   const inputs = names.map((n, k) => {
@@ -274,7 +410,8 @@ export function renderPointEditor() {
   });
   const apply = () => {
     const coords = inputs.map((el) => Number(el.value));
-    if (attempt(() => state.pg.set_point(c, i, new Float64Array(coords)), { anchor: eventControl() })) changed({ panels: false });
+    if (attempt(() => setKey(linked, i, new Float64Array(coords)), { anchor: eventControl() })) changed({ panels: false });
+    else renderPointEditor(); // the coordinates go back to the scene's
   };
   for (const el of inputs) el.addEventListener('change', apply);
   if (q.length === 4) {
@@ -295,7 +432,8 @@ export function renderPointEditor() {
     });
     const applyAA = () => {
       const [deg, x, y, z] = fields.map((el) => Number(el.value));
-      if (attempt(() => state.pg.set_point(c, i, sk.axis_angle_to_key(deg, x, y, z)), { anchor: eventControl() })) changed();
+      if (attempt(() => setKey(linked, i, sk.axis_angle_to_key(deg, x, y, z)), { anchor: eventControl() })) changed();
+      else renderPointEditor();
     };
     for (const el of fields) el.addEventListener('change', applyAA);
     const note = document.createElement('p');
@@ -308,13 +446,15 @@ export function renderPointEditor() {
   del.textContent = 'Delete point';
   del.addEventListener('click', deleteSelected);
   box.append(del);
+  // In reach: a bottom sheet on a phone (CSS), scrolled into the side panel's view elsewhere.
+  if (!matchMedia('(max-width: 800px)').matches) $('point-section').scrollIntoView({ block: 'nearest' });
 }
 
 export function deleteSelected() {
   if (!state.selected) return;
   const [c, i] = state.selected;
   // From the keyboard or the button: the message goes beside the point editor's button.
-  if (attempt(() => state.pg.remove_point(c, i), { anchor: $('point-editor').querySelector('button') })) {
+  if (attempt(() => removeKey(sharing(c), i), { anchor: $('point-editor').querySelector('button') })) {
     state.selected = null;
     changed();
   }
@@ -326,12 +466,20 @@ export function renderReadout() {
   const pg = state.pg;
   const colors = JSON.parse(pg.colors());
   const s3 = pg.space() === 'S3';
+  const frame = s3 ? viewOptions().omega_frame : 'space';
   const box = $('readout');
   box.replaceChildren();
   state.readouts = [];
+  let same = s3;
   for (let c = 0; c < pg.curve_count(); c++) {
-    const r = JSON.parse(pg.readout(c, state.t, state.frame));
+    const r = JSON.parse(pg.readout(c, state.t, frame));
     state.readouts.push(r);
+    if (s3) {
+      // Whether ω has the same components in the other frame (at the identity, or with ω
+      // along the rotation's axis): then the switch changes nothing at this t.
+      const other = JSON.parse(pg.readout(c, state.t, frame === 'body' ? 'space' : 'body')).omega;
+      if (Math.hypot(...other.map((x, k) => x - r.omega[k])) > 1e-9 * (1 + r.speed)) same = false;
+    }
     const block = document.createElement('div');
     block.className = 'curve-at';
     const sw = document.createElement('span');
@@ -351,11 +499,16 @@ export function renderReadout() {
     line(s3 ? 'q (w,x,y,z)' : 'point', vec(r.point));
     line(s3 ? '|ω| rad/t' : 'speed', num(r.speed));
     if (r.omega) {
-      line(`ω ${state.frame}`, vec(r.omega));
-      line(`α ${state.frame}`, vec(r.alpha));
+      line(`ω ${frame}`, vec(r.omega));
+      line(`α ${frame}`, vec(r.alpha));
     }
     box.append(block);
   }
+  const note = $('frame-note');
+  note.hidden = !same;
+  note.textContent = same
+    ? 'At this t the body and space frames coincide (the body is in its rest orientation, or turns about its own rotation axis): ω reads the same in both.'
+    : '';
   markJointRows();
 }
 

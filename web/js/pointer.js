@@ -1,13 +1,17 @@
-// Pointer, wheel and keyboard: pick and drag a point or a key's axis tip, turn the view, click
-// to add a point, click or drag on the plot to move t, wheel or pinch to zoom, hover feedback,
-// Delete, Ctrl+Z / Ctrl+Shift+Z. Picking, drags and rotations are Rust's.
+// Pointer, wheel and keyboard: pick and drag a point or a key's axis tip, turn the view,
+// double-click to add a point (a single click on empty sphere only deselects), click or drag on
+// the plot to move t, wheel or pinch to zoom, hover feedback, Ctrl+Z / Ctrl+Shift+Z; with the
+// sphere focused, Tab through the points, arrow keys to move the selected one or turn the view,
+// Delete, Escape, + and −. Picking, drags and rotations are Rust's; edits of a key go to every
+// curve that shares it (keys.js).
 //
 // The pointer-move handler only records where the pointer is: the edit and the render happen
 // once per animation frame (view.redraw's task), at reduced resolution while the drag lasts
 // (state.quick); the URL, the JSON box and the table follow when the drag ends.
 import { $, state, attempt, commit } from './state.js';
-import { redraw, drawOverlay, plotAt, timeAt } from './view.js';
-import { changed, renderPanels, deleteSelected, setTime, stepHistory } from './panels.js';
+import { redraw, drawOverlay, plotAt, timeAt, pointOnCanvas, keyAxisOnScreen } from './view.js';
+import { changed, renderPanels, deleteSelected, setTime, stepHistory, linkSoon } from './panels.js';
+import { sharing, moveKeyTo, dragKey, addKeyAt } from './keys.js';
 
 /** Durations (ms) of the last pointer-move handler runs (the bench reads them). */
 export const moveTimes = [];
@@ -39,6 +43,7 @@ function setZoom(z) {
   state.zoom = Math.min(2.5, Math.max(0.5, z));
   quickFor(180);
   redraw();
+  linkSoon();
 }
 
 function onDown(ev) {
@@ -71,7 +76,7 @@ function onDown(ev) {
     state.selected = [c, i];
     state.activeCurve = c;
     attempt(() => state.pg.pin_camera(), { record: false });
-    drag = { kind: 'point', c, i, x0: x, y0: y, key0: state.pg.point(c, i), moved: false, before };
+    drag = { kind: 'point', c, i, x0: x, y0: y, key0: state.pg.point(c, i), moved: false, before, linked: sharing(c) };
     renderPanels();
   } else {
     drag = { kind: 'view', x0: x, y0: y, camera0: state.pg.camera(), moved: false, before };
@@ -127,9 +132,9 @@ function dragStep(d = drag) {
   if (d.kind === 'view') {
     ok = attempt(() => pg.drag_view(new Float64Array(d.camera0), d.x0, d.y0, x, y, state.size), { record: false });
   } else if (d.key0.length === 4) {
-    ok = attempt(() => pg.drag_key(d.c, d.i, new Float64Array(d.key0), d.x0, d.y0, x, y, state.size), { record: false });
+    ok = attempt(() => dragKey(d.linked, d.i, d.key0, d.x0, d.y0, x, y, state.size), { record: false });
   } else {
-    ok = attempt(() => pg.move_point_to(d.c, d.i, x, y, state.size), { record: false });
+    ok = attempt(() => moveKeyTo(d.linked, d.i, x, y, state.size), { record: false });
   }
   if (ok) changed({ panels: false, light: true });
 }
@@ -175,24 +180,32 @@ function onUp(ev) {
     changed(); // selected (the camera pinned), nothing moved
     return;
   }
-  // A click (no drag) on the sphere adds a point to the active curve.
-  const [x, y] = devicePoint(ev);
-  const c = Math.min(state.activeCurve, state.pg.curve_count() - 1);
-  const r = 0.45 * state.size;
-  if (Math.hypot(x - state.size / 2, y - state.size / 2) <= r && state.pg.space() !== 'S1') {
-    const before = JSON.parse(state.pg.curve_json(c)).points.length;
-    if (attempt(() => {
-      state.pg.pin_camera();
-      state.pg.add_point_at(c, x, y, state.size);
-    }, { record: false })) {
-      commit(d.before);
-      state.selected = [c, before];
-      changed();
-    }
-  } else {
+  // A click (no drag) on empty space deselects (a double-click adds a point: onDoubleClick).
+  if (state.selected) {
     state.selected = null;
     renderPanels();
     redraw();
+  }
+}
+
+/** A double-click on empty sphere appends the point there to the active curve (and to the
+ * curves sharing its keys), selected; one undoable edit. */
+function onDoubleClick(ev) {
+  const [x, y] = devicePoint(ev);
+  if (plotAt(x, y) || y > state.size) return;
+  if (Math.hypot(x - state.size / 2, y - state.size / 2) > 0.45 * state.size) return;
+  if (state.pg.pick(x, y, state.size, 12 * Math.max(1, state.size / 512))) return;
+  const before = state.pg.scene_json();
+  const c = Math.min(state.activeCurve, state.pg.curve_count() - 1);
+  const count = JSON.parse(state.pg.curve_json(c)).points.length;
+  const linked = sharing(c);
+  if (attempt(() => {
+    state.pg.pin_camera();
+    addKeyAt(linked, x, y, state.size);
+  }, { record: false })) {
+    commit(before);
+    state.selected = [c, count];
+    changed();
   }
 }
 
@@ -213,6 +226,100 @@ function onWheel(ev) {
 
 const typing = () => ['INPUT', 'TEXTAREA', 'SELECT'].includes(document.activeElement?.tagName);
 
+/** Every pickable point as [curve, index], curve by curve (Tab's order). Keys shared by
+ * several curves are listed once, under the first. */
+function keyList() {
+  const pg = state.pg;
+  const out = [];
+  const seen = new Set();
+  for (let c = 0; c < pg.curve_count(); c++) {
+    const group = sharing(c).sort((a, b) => a - b);
+    if (seen.has(group[0])) continue;
+    for (const k of group) seen.add(k);
+    const n = JSON.parse(pg.curve_json(c)).points.length;
+    for (let i = 0; i < n; i++) out.push([c, i]);
+  }
+  return out;
+}
+
+/** The step of an arrow key, device pixels. */
+const STEP = 10;
+
+/**
+ * Keys on the focused sphere: Tab / Shift+Tab select the next / previous point (past the last
+ * one, focus moves on as usual); arrows move the selected point, or turn the view when none
+ * is selected; Escape deselects; + and − zoom. Each arrow press is one undoable edit.
+ */
+function onCanvasKey(ev) {
+  const pg = state.pg;
+  if (ev.key === 'Tab') {
+    const keys = keyList();
+    const at = state.selected ? keys.findIndex(([c, i]) => c === state.selected[0] && i === state.selected[1]) : -1;
+    const next = at + (ev.shiftKey ? -1 : 1);
+    if ((state.selected === null && ev.shiftKey) || next < 0 || next >= keys.length) {
+      state.selected = null;
+      renderPanels();
+      redraw();
+      return; // focus leaves the sphere
+    }
+    ev.preventDefault();
+    state.selected = keys[next];
+    state.activeCurve = keys[next][0];
+    renderPanels();
+    redraw();
+    return;
+  }
+  if (ev.key === 'Escape') {
+    if (state.selected) {
+      state.selected = null;
+      renderPanels();
+      redraw();
+    }
+    return;
+  }
+  if (ev.key === '+' || ev.key === '=' || ev.key === '-' || ev.key === '−') {
+    ev.preventDefault();
+    setZoom(state.zoom * (ev.key === '-' || ev.key === '−' ? 1 / 1.15 : 1.15));
+    return;
+  }
+  const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+  const dir = arrows[ev.key];
+  if (!dir) return;
+  ev.preventDefault();
+  const step = STEP * state.dpr * (ev.shiftKey ? 4 : 1);
+  const [dx, dy] = [dir[0] * step, dir[1] * step];
+  const before = pg.scene_json();
+  let ok;
+  if (state.selected) {
+    const [c, i] = state.selected;
+    const linked = sharing(c);
+    const key = pg.point(c, i);
+    // The camera is pinned first (moving points must not move a default camera).
+    if (key.length === 4) {
+      // A key turns as if its z axis tip were dragged.
+      const [x, y] = keyAxisOnScreen(key, 2);
+      ok = attempt(() => {
+        pg.pin_camera();
+        dragKey(linked, i, key, x, y, x + dx, y + dy, state.size);
+      }, { record: false });
+    } else {
+      const [x, y] = pointOnCanvas(key);
+      ok = attempt(() => {
+        pg.pin_camera();
+        moveKeyTo(linked, i, x + dx, y + dy, state.size);
+      }, { record: false });
+    }
+  } else {
+    // The view turns as if the sphere's centre were dragged.
+    const c = state.size / 2;
+    ok = attempt(() => pg.drag_view(new Float64Array(pg.camera()), c, c, c + dx, c + dy, state.size), { record: false });
+  }
+  if (ok) {
+    commit(before);
+    changed();
+  }
+}
+
 /** Listens on the overlay canvas, and for the keyboard outside form fields. */
 export function installPointer() {
   const overlay = $('overlay');
@@ -227,6 +334,8 @@ export function installPointer() {
     }
   });
   overlay.addEventListener('wheel', onWheel, { passive: false });
+  overlay.addEventListener('keydown', onCanvasKey);
+  overlay.addEventListener('dblclick', onDoubleClick);
   window.addEventListener('keydown', (ev) => {
     const mod = ev.ctrlKey || ev.metaKey;
     if (mod && !typing() && (ev.key === 'z' || ev.key === 'Z')) {

@@ -20,27 +20,32 @@ export const state = {
   playing: false,
   t: 0,              // the time on the scene's time axis (the curves' own t), one for the whole page
   axis: [0, 1, 0],   // pg.time_axis(): [t0, t1, normalized]
-  frame: 'space',    // the readout's frame for ω and α on S³
   methods: [],       // the registry, as sk.methods() gives it
   presets: [],
   undo: [],          // scene JSON texts before each edit
   redo: [],
 };
 
+/** The notice element, kept here: while the panel is redrawn it may be outside the document
+ * for a moment, where getElementById would not find it. */
+let noticeElement = null;
+const noticeBox = () => (noticeElement ??= $('notice'));
+
 /** The last edit's failure: its message, and where it is shown. */
 let notice = { anchor: null, key: null };
 
 /**
  * Shows `message` (empty: hides it) where the action was: beside `anchor` (a control; it is
- * marked as failed) or, without one, over the stage. Inside the viewport either way. `help` is
- * an optional explanation and `offer` an optional `{ label, run }` button.
+ * marked as failed) or, without one, over the stage. Inside the viewport either way. `lead` is
+ * the plain explanation shown first (by default one for the message's kind, if any), the
+ * library's message follows; `offer` is an optional `{ label, run }` button.
  */
-export function showError(message, { anchor = null, help = '', offer = null } = {}) {
-  const box = $('notice');
+export function showError(message, { anchor = null, lead = plainLead(message), offer = null } = {}) {
+  const box = noticeBox();
   for (const el of document.querySelectorAll('[aria-invalid="true"]')) el.removeAttribute('aria-invalid');
   $('error').textContent = message ? `error: ${message}` : '';
-  $('error-help').textContent = help;
-  $('error-help').hidden = !help;
+  $('error-lead').textContent = lead;
+  $('error-lead').hidden = !lead;
   const button = $('error-offer');
   button.hidden = !offer;
   button.onclick = offer ? () => offer.run() : null;
@@ -50,10 +55,17 @@ export function showError(message, { anchor = null, help = '', offer = null } = 
   placeNotice();
 }
 
+/** The plain words that open the message of a scene text that is not JSON (the parser's
+ * words follow), or ''. */
+function plainLead(message) {
+  if (/^invalid scene JSON: /.test(message ?? '')) return 'The scene text is not valid JSON, so nothing changed. Where the parser stopped:';
+  return '';
+}
+
 /** Puts the notice beside its control (found again by its key after the panel was redrawn)
  * or over the stage, and scrolls it into view. */
 export function placeNotice() {
-  const box = $('notice');
+  const box = noticeBox();
   if (box.hidden) return;
   let anchor = notice.anchor;
   if (anchor && !anchor.isConnected && notice.key) anchor = document.querySelector(`[data-key="${notice.key}"]`);
@@ -71,7 +83,7 @@ export function placeNotice() {
 /** Takes the notice out of the side panel before a part of it is redrawn (it is put back
  * beside the redrawn control by placeNotice). */
 export function parkNotice() {
-  const box = $('notice');
+  const box = noticeBox();
   if (box.parentElement !== $('stage')) $('stage').append(box);
 }
 
@@ -95,7 +107,7 @@ export function attempt(edit, { anchor = null, record = true } = {}) {
     showError(message, { anchor, ...explain(edit, anchor) });
     return false;
   }
-  if (!$('notice').hidden) showError('');
+  if (!noticeBox().hidden) showError('');
   if (record && before !== undefined) commit(before);
   return true;
 }
@@ -131,11 +143,11 @@ function explain(edit, anchor) {
     ? `the nearest one found misses a point by ${f.residual.toPrecision(2)} rad (${deg.toPrecision(2)}°)`
     : 'the solver found none';
   const shape = method?.params.some((p) => p.name === 'beta1') ? 'Beta spline with these β' : `${spec.method} curve with these parameters`;
-  const help = `No ${shape} passes through the points: ${miss} after ${f.iterations} iterations.`;
+  const lead = `No ${shape} passes through the points: ${miss} after ${f.iterations} iterations. The picture keeps the last curve that worked.`;
   // Methods whose schema has an `interpolate` switch can show their approximating curve.
   const canApproximate = method?.params.some((p) => p.name === 'interpolate' && p.type === 'bool');
   return {
-    help,
+    lead,
     offer: canApproximate ? { label: 'Show the approximating spline', run: () => approximate(curve, edit, anchor) } : null,
   };
 }

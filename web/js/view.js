@@ -12,15 +12,13 @@ export function viewOptions() {
   return JSON.parse(state.pg.view_options()) ?? { plot: 'none', legend: false, axes: ['x'], frames: 0 };
 }
 
-/** Whether the scene shows a plot under the sphere (speed, or speed and omega). */
-export function hasPlot() {
-  return viewOptions().plot !== 'none';
-}
-
 /** The frame drawn while dragging: this fraction of the CSS width in pixels, at most QUICK_MAX
  * wide (measured: BENCHMARKS.md, section 6). */
 const QUICK_SCALE = 0.7;
 const QUICK_MAX = 640;
+
+/** The smallest text of the figure (plot and legend), CSS pixels per em. */
+export const MIN_TEXT = 11;
 
 function fit() {
   state.dpr = fixedSize ? 1 : window.devicePixelRatio || 1;
@@ -35,11 +33,11 @@ function fit() {
   const h = narrow
     ? window.innerHeight - 56
     : stage.clientHeight - stage.querySelector('.toolbar').offsetHeight - 16;
-  // The frame's height per width: the last still frame's if it had the same plot strip (plots
-  // and the legend make it taller than wide), or a guess.
-  const plot = hasPlot();
-  const key = `${plot} ${state.pg.curve_count()}`;
-  const factor = state.aspect?.key === key ? state.aspect.value : plot ? 1.45 : 1.08;
+  // The frame's height per width: the last still frame's if it had the same layout (plots,
+  // the legend and a title make it taller than wide), or a guess that drawNow corrects.
+  const view = viewOptions();
+  const key = `${JSON.stringify(view)} ${state.pg.curve_count()} ${state.pg.scene_json().includes('"title"')}`;
+  const factor = state.aspect?.key === key ? state.aspect.value : view.plot === 'omega' ? 1.9 : view.plot !== 'none' ? 1.45 : 1.08;
   const css = Math.max(160, Math.min(w, h / factor));
   state.base = Math.floor(css);
   state.size = Math.min(4096, Math.floor(css * state.dpr * state.zoom));
@@ -69,13 +67,19 @@ export function redraw(task = null) {
   });
 }
 
-export function drawNow() {
+/** Draws the frame now. A frame whose height per width differs from the one `fit` assumed
+ * (a new layout) is fitted and drawn again, so that the figure fits the stage: a few times at
+ * most, as the text floor makes a smaller figure relatively taller. */
+export function drawNow(refits = 4) {
   const canvas = $('scene');
   fit();
   const quick = state.quick && !fixedSize;
   const drawSize = quick
     ? Math.min(state.size, Math.max(160, Math.round(Math.min(QUICK_MAX, (QUICK_SCALE * state.size) / state.dpr))))
     : state.size;
+  // Text of at least MIN_TEXT CSS pixels (zoomed with the figure); none at a fixed size (the
+  // golden's pixels).
+  state.pg.set_min_text(fixedSize ? 0 : (MIN_TEXT * state.dpr * state.zoom * drawSize) / state.size);
   try {
     state.pg.draw(canvas, drawSize);
   } catch (e) {
@@ -87,11 +91,10 @@ export function drawNow() {
   }));
   const aspect = canvas.height / canvas.width;
   if (!quick && state.zoom === 1) {
-    const again = state.aspect?.key !== state.aspectKey && !fixedSize;
     state.aspect = { key: state.aspectKey, value: aspect };
-    if (again && Math.abs(aspect - state.fitFactor) > 0.01) {
-      // The first frame of this shape: fit again with its real height.
-      drawNow();
+    if (refits > 0 && !fixedSize && Math.abs(aspect - state.fitFactor) > 0.002) {
+      // The frame is not the shape fit assumed: fit again with its real height.
+      drawNow(refits - 1);
       return;
     }
   }
@@ -135,7 +138,7 @@ export function drawOverlay() {
   // The same marks as last time (turning the view with nothing on the sphere's overlay moves
   // only the plot-free image): leave the overlay alone, so the compositor has less to do.
   const onSphere = bodies || state.selected || state.hover;
-  const key = [state.t, bodies, state.selected, state.hover, overlay.width, overlay.height, pg.builds(), pg.curve_count(),
+  const key = [state.t, bodies, state.selected, state.hover, state.activeCurve, overlay.width, overlay.height, pg.builds(), pg.curve_count(),
     onSphere ? pg.camera().join() : '', JSON.stringify(state.plots)].join('|');
   if (key === lastOverlay) return;
   lastOverlay = key;
@@ -143,7 +146,8 @@ export function drawOverlay() {
   ctx.clearRect(0, 0, overlay.width, overlay.height);
   const s = state.size;
   const k = s / 512;
-  if (bodies) drawBodies(ctx, pg, state.t, s);
+  // ω of the active curve only: one arrow per curve would crowd a comparison.
+  if (bodies) drawBodies(ctx, pg, state.t, s, Math.min(state.activeCurve, pg.curve_count() - 1));
   for (const p of state.plots ?? []) {
     const x = plotX(p, state.t);
     ctx.strokeStyle = '#b3261e';
@@ -161,9 +165,9 @@ export function drawOverlay() {
     ctx.fill();
   }
   if (state.hover && !sameKey(state.hover, state.selected)) {
-    for (const p of markers(state.hover)) ring(ctx, p, '#0072b2', 2.5 * k, 12 * k);
+    for (const p of markers(state.hover)) ring(ctx, p, '#5b6470', 2.5 * k, 12 * k);
   }
-  for (const p of markers(state.selected)) ring(ctx, p, '#e69f00', 3 * k, 11 * k);
+  for (const p of markers(state.selected)) ring(ctx, p, '#1f2328', 3 * k, 11 * k);
 }
 
 function ring(ctx, p, color, width, radius) {

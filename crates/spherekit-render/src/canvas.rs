@@ -36,6 +36,9 @@ pub(crate) enum Shape {
     Square,
     /// Hollow diamond: auxiliary vertices.
     Diamond,
+    /// A circle with a white halo: the data points of a second, third, … curve through the
+    /// same keys, drawn around the first curve's dots (each curve's wider than the last).
+    Ring,
 }
 
 enum Item {
@@ -61,6 +64,18 @@ impl Sketch {
     /// Adds a polyline of points on (or near) the sphere (see [`Canvas::polyline`]).
     pub(crate) fn polyline(&mut self, pts: &[DVec3], style: LineStyle) {
         self.marks.push(Mark::Line(pts.to_vec(), style));
+    }
+
+    /// Puts the derived points' markers after every line and the keys' markers last, each in
+    /// the order it was added (so that with several curves through the same keys no curve's
+    /// line or control point hides another's key marks).
+    pub(crate) fn markers_last(&mut self) {
+        let rank = |m: &Mark| match m {
+            Mark::Line(..) => 0,
+            Mark::Marker(_, Shape::Square | Shape::Diamond, ..) => 1,
+            Mark::Marker(_, Shape::Dot | Shape::Ring, ..) => 2,
+        };
+        self.marks.sort_by_key(rank);
     }
 
     /// Adds a marker at a point of the sphere (see [`Canvas::marker`]).
@@ -198,7 +213,7 @@ impl Canvas {
         let mut k = Kinds::default();
         for item in self.back.iter().chain(&self.front) {
             match item {
-                Item::Marker(_, Shape::Dot, ..) => k.dot = true,
+                Item::Marker(_, Shape::Dot | Shape::Ring, ..) => k.dot = true,
                 Item::Marker(_, Shape::Square, ..) => k.square = true,
                 Item::Marker(_, Shape::Diamond, ..) => k.diamond = true,
                 Item::Line(_, style, false) => {
@@ -360,6 +375,31 @@ pub(crate) fn draw_marker(
         surface.paint([0xff; 3], alpha);
         surface.polyline(&[p, p], Pen::round(2.0 * h - rim));
         surface.paint(color, alpha);
+        return;
+    }
+    if shape == Shape::Ring {
+        // Two open halves, painted one by one: the stroke of a closed loop would fill its
+        // inside.
+        let width = (0.12 * size).max(1.0);
+        let half = |from: usize| -> Vec<Point> {
+            (from..=from + 16)
+                .map(|k| {
+                    #[expect(clippy::cast_precision_loss, reason = "a small index")]
+                    let a = k as f32 * core::f32::consts::TAU / 32.0;
+                    at(h * a.cos(), h * a.sin())
+                })
+                .collect()
+        };
+        let halves = [half(0), half(16)];
+        for (pen, color, alpha) in [
+            (Pen::round(3.0 * width), [0xff; 3], alpha),
+            (Pen::round(width), color, alpha),
+        ] {
+            for arc in &halves {
+                surface.polyline(arc, pen);
+                surface.paint(color, alpha);
+            }
+        }
         return;
     }
     // A square (or a square turned by 45°: the diamond) is a butt-ended segment as wide as

@@ -172,7 +172,7 @@ impl Drawing {
     /// As [`render`](Self::render).
     pub fn render_figure(&self, size: u32) -> Result<(Pixmap, Vec<PlotAxes>), RenderError> {
         self.with_layers(|layers| {
-            Prepared::new(layers, size)?.render_layers(layers, &mut RenderCache::default())
+            Prepared::new(layers, size, 0.0)?.render_layers(layers, &mut RenderCache::default())
         })
     }
 

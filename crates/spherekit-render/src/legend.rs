@@ -142,7 +142,7 @@ pub(crate) fn draw(surface: &mut dyn Surface, entries: &[Entry], top: f32, size:
             }
             Swatch::Marker(shape, color) => {
                 let size = match shape {
-                    Shape::Dot => 8.0,
+                    Shape::Dot | Shape::Ring => 8.0,
                     Shape::Square => 6.0,
                     Shape::Diamond => 7.0,
                 } * scale;

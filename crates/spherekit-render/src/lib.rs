@@ -43,6 +43,7 @@ use core::fmt;
 use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, Curve, Jet, Manifold, S2Point, Side, SnPoint, UnitQuat, angular_velocity_acceleration,
+    angular_velocity_acceleration_body,
 };
 use spherekit_scene::{Built, BuiltCurve, Plot, PlotTime, Scene, SceneError, Space, View};
 use tiny_skia::{Color, Pixmap, Rect};
@@ -57,19 +58,22 @@ use text::Glyphs;
 /// The smallest and largest image sizes [`render`] accepts (pixels, the sphere's square).
 pub const SIZE_RANGE: (u32, u32) = (16, 4096);
 
-/// The colour-blind-safe palette (Okabe–Ito) curves take in order unless a scene gives one.
-pub const PALETTE: [[u8; 3]; 7] = [
-    [0x00, 0x72, 0xb2], // blue
-    [0xd5, 0x5e, 0x00], // vermillion
-    [0x00, 0x9e, 0x73], // bluish green
-    [0xcc, 0x79, 0xa7], // reddish purple
-    [0xe6, 0x9f, 0x00], // orange
-    [0x56, 0xb4, 0xe9], // sky blue
+/// The colours curves take in order unless a scene gives one. They keep clear of the hues of
+/// [`AXIS_COLORS`] (red, green and blue stand for the body x, y and z axes and ω's x, y and z
+/// components): wine, ochre, purple, grey, indigo and black (from Paul Tol's muted and
+/// high-contrast schemes, readable with the common colour-vision deficiencies).
+pub const PALETTE: [[u8; 3]; 6] = [
+    [0x88, 0x22, 0x55], // wine
+    [0xa6, 0x7c, 0x00], // ochre
+    [0xaa, 0x44, 0x99], // purple
+    [0x5f, 0x6b, 0x7a], // grey
+    [0x33, 0x22, 0x88], // indigo
     [0x00, 0x00, 0x00], // black
 ];
 
-/// The colours of the body x, y and z axes in the rotation-trajectory pictures of a single
-/// S³ curve (vermillion, bluish green, blue).
+/// The colours of the body x, y and z axes, and of ω's x, y and z components for one curve:
+/// the conventional red, green and blue, as Okabe and Ito's colour-blind-safe vermillion,
+/// bluish green and blue.
 pub const AXIS_COLORS: [[u8; 3]; 3] = [[0xd5, 0x5e, 0x00], [0x00, 0x9e, 0x73], [0x00, 0x72, 0xb2]];
 
 const POINT_COLOR: Rgb = [0x1f, 0x23, 0x28];
@@ -185,7 +189,7 @@ pub fn render_svg(scene: &Scene, size: u32) -> Result<String, RenderError> {
 
 /// The SVG document of a figure's layers.
 fn svg_of(layers: &Layers<'_>, size: u32) -> Result<String, RenderError> {
-    let prepared = Prepared::new(layers, size)?;
+    let prepared = Prepared::new(layers, size, 0.0)?;
     let figure = Figure::new(&prepared, layers);
     let mut svg = Svg::new(size, figure.height);
     let frames: Vec<Rect> = prepared.panels.iter().map(|(r, _)| *r).collect();
@@ -209,6 +213,11 @@ pub fn camera_of(scene: &Scene, curves: &[BuiltCurve]) -> Camera {
 /// are those of [`render_figure`].
 pub struct Prepared {
     size: u32,
+    /// Pixels per pixel-at-512 of the text, the plots' and the legend's marks (at least the
+    /// sphere's scale; more with a text floor, see [`prepare_with_text`]).
+    text: f32,
+    /// The height of one plot strip.
+    strip: u32,
     sketch: Sketch,
     panels: Vec<(Rect, plot::Panel)>,
     time: [f64; 2],
@@ -232,7 +241,24 @@ impl fmt::Debug for Prepared {
 ///
 /// [`RenderError`] for a bad view or size, or a sphere that cannot be drawn.
 pub fn prepare(scene: &Scene, curves: &[BuiltCurve], size: u32) -> Result<Prepared, RenderError> {
-    Prepared::new(&Layers::of_scene(scene, curves), size)
+    Prepared::new(&Layers::of_scene(scene, curves), size, 0.0)
+}
+
+/// As [`prepare`], with text of at least `min_text` pixels per em: the plots' and the
+/// legend's text, marks and spacing grow together (the strips up to half as tall again), so
+/// that a small figure on a screen stays readable; the sphere keeps its size. With a floor
+/// below the figure's own text size the figure is that of [`prepare`].
+///
+/// # Errors
+///
+/// As [`prepare`].
+pub fn prepare_with_text(
+    scene: &Scene,
+    curves: &[BuiltCurve],
+    size: u32,
+    min_text: f32,
+) -> Result<Prepared, RenderError> {
+    Prepared::new(&Layers::of_scene(scene, curves), size, min_text)
 }
 
 /// What a figure draws, from a scene or from a [`Drawing`]: the sphere, the view options, the
@@ -265,7 +291,7 @@ impl<'a> Layers<'a> {
                 .iter()
                 .map(|spec| Style {
                     color: spec.color,
-                    label: spec.label.as_deref().unwrap_or(spec.method.id),
+                    label: spec.label.as_deref().unwrap_or(spec.method.name),
                     polygon: !spec.method.interpolates,
                 })
                 .collect(),
@@ -278,7 +304,7 @@ impl<'a> Layers<'a> {
 }
 
 impl Prepared {
-    fn new(layers: &Layers<'_>, size: u32) -> Result<Self, RenderError> {
+    fn new(layers: &Layers<'_>, size: u32, min_text: f32) -> Result<Self, RenderError> {
         if !(SIZE_RANGE.0..=SIZE_RANGE.1).contains(&size) {
             return Err(RenderError::Size(size));
         }
@@ -294,10 +320,11 @@ impl Prepared {
         let mut components = Vec::new();
         for (i, (style, curve)) in layers.styles.iter().zip(curves).enumerate() {
             let color = layers.color(i);
+            let key = key_marker(i, single, color);
             let polygon = style.polygon;
             let sampled = match curve {
                 BuiltCurve::S2(b) => {
-                    draw_points(&mut sketch, b, color, polygon, view, &|p: &S2Point| {
+                    draw_points(&mut sketch, b, color, key, polygon, view, &|p: &S2Point| {
                         p.as_dvec3()
                     });
                     sample(&*b.curve, size, normalized, &|j| {
@@ -307,17 +334,22 @@ impl Prepared {
                 }
                 BuiltCurve::Sn(b) => {
                     let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
-                    draw_points(&mut sketch, b, color, polygon, view, &embed);
+                    draw_points(&mut sketch, b, color, key, polygon, view, &embed);
                     sample(&*b.curve, size, normalized, &|j| {
                         [j.velocity.length(), 0.0, 0.0, 0.0]
                     })
                 }
                 BuiltCurve::S3(b) => {
-                    draw_rotations(&mut sketch, b, color, single, view);
-                    // |ω| = 2|q′| (the half-angle factor); ω in the space frame.
+                    draw_rotations(&mut sketch, b, color, key, single, view);
+                    // |ω| = 2|q′| (the half-angle factor); ω in the space or the body frame.
+                    let body = view.omega_body;
                     sample(&*b.curve, size, normalized, &|j| {
-                        let w =
-                            angular_velocity_acceleration(j.point, j.velocity, j.acceleration).0;
+                        let w = if body {
+                            angular_velocity_acceleration_body(j.point, j.velocity, j.acceleration)
+                                .0
+                        } else {
+                            angular_velocity_acceleration(j.point, j.velocity, j.acceleration).0
+                        };
                         [2.0 * j.velocity.length(), w.x, w.y, w.z]
                     })
                 }
@@ -332,6 +364,7 @@ impl Prepared {
                 components.push(sampled.series(k + 1, c, dash, k == 0));
             }
         }
+        sketch.markers_last();
         let s3 = layers.space == Space::S3;
         let mut panels_content = Vec::new();
         if view.plot != Plot::None {
@@ -344,7 +377,7 @@ impl Prepared {
         }
         if omega {
             panels_content.push(plot::Panel {
-                quantity: component_label(s3, normalized),
+                quantity: component_label(s3, view.omega_body, normalized),
                 time: if normalized { "u" } else { "t" },
                 signed: true,
                 series: components,
@@ -360,7 +393,15 @@ impl Prepared {
                     [a.min(t0), b.max(t1)]
                 })
         };
-        let strip = strip_height(size);
+        let scale = canvas::scale_of(size);
+        let text = scale.max(min_text / plot::LABEL_EM);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            clippy::cast_precision_loss,
+            reason = "pixel sizes"
+        )]
+        let strip = (strip_height(size) as f32 * (text / scale).min(1.5)).round() as u32;
         let panels: Vec<(Rect, plot::Panel)> = panels_content
             .into_iter()
             .enumerate()
@@ -371,6 +412,8 @@ impl Prepared {
             .collect();
         Ok(Self {
             size,
+            text,
+            strip,
             sketch,
             panels,
             time,
@@ -470,9 +513,9 @@ impl<'a> Figure<'a> {
         let size = prepared.size;
         let axes = Camera::of(view, layers.curves).axes();
         let canvas = prepared.sketch.project(size, axes);
-        let scale = canvas.scale;
+        let scale = prepared.text;
         let panels = &prepared.panels;
-        let strip = strip_height(size);
+        let strip = prepared.strip;
         let legend = if view.legend {
             legend_entries(layers, &canvas, prepared.single, !panels.is_empty())
         } else {
@@ -555,10 +598,11 @@ fn speed_label(s3: bool, normalized: bool) -> String {
     }
 }
 
-fn component_label(s3: bool, normalized: bool) -> String {
+fn component_label(s3: bool, body: bool, normalized: bool) -> String {
     let unit = if normalized { "u" } else { "t" };
+    let frame = if body { "body" } else { "space" };
     if s3 {
-        format!("angular velocity ω, space frame (rad per unit {unit})")
+        format!("angular velocity ω, {frame} frame (rad per unit {unit})")
     } else {
         format!("velocity p′ in x, y, z (per unit {unit})")
     }
@@ -790,11 +834,28 @@ fn arcs(canvas: &mut Sketch, pts: &[DVec3], style: LineStyle) {
     }
 }
 
-/// A curve on S² (or S¹ on the equator): the curve, its points, derived points and polygons.
+/// How curve `i`'s keys are marked (shape, colour, size): dark dots for a single curve; with
+/// several, the first curve's dots and the others' rings, each wider than the last, in the
+/// curve's colour, so that a key the curves share shows every curve's mark.
+fn key_marker(i: usize, single: bool, color: Rgb) -> (Shape, Rgb, f32) {
+    if single {
+        (Shape::Dot, POINT_COLOR, 8.0)
+    } else if i == 0 {
+        (Shape::Dot, color, 9.0)
+    } else {
+        #[expect(clippy::cast_precision_loss, reason = "a few curves")]
+        let step = i.min(5) as f32;
+        (Shape::Ring, color, 9.0 + 6.0 * step)
+    }
+}
+
+/// A curve on S² (or S¹ on the equator): the curve, its points (`key`: how they are marked),
+/// derived points and polygons.
 fn draw_points<P: Manifold>(
     canvas: &mut Sketch,
     b: &Built<P>,
     color: Rgb,
+    key: (Shape, Rgb, f32),
     polygon: bool,
     view: &View,
     embed: &dyn Fn(&P) -> DVec3,
@@ -833,12 +894,20 @@ fn draw_points<P: Manifold>(
         canvas.marker(*p, Shape::Diamond, color, 7.0);
     }
     for p in &input {
-        canvas.marker(*p, Shape::Dot, POINT_COLOR, 8.0);
+        canvas.marker(*p, key.0, key.1, key.2);
     }
 }
 
-/// A curve on S³ as the trajectories of the tips of its rotated body axes.
-fn draw_rotations(canvas: &mut Sketch, b: &Built<UnitQuat>, color: Rgb, single: bool, view: &View) {
+/// A curve on S³ as the trajectories of the tips of its rotated body axes (`key`: how its keys
+/// are marked, drawn in the axis colour for a single curve).
+fn draw_rotations(
+    canvas: &mut Sketch,
+    b: &Built<UnitQuat>,
+    color: Rgb,
+    key: (Shape, Rgb, f32),
+    single: bool,
+    view: &View,
+) {
     for &k in &view.axes {
         let axis = [DVec3::X, DVec3::Y, DVec3::Z][k];
         let c = if single { AXIS_COLORS[k] } else { color };
@@ -855,7 +924,7 @@ fn draw_rotations(canvas: &mut Sketch, b: &Built<UnitQuat>, color: Rgb, single: 
             canvas.marker(q.rotate(axis), Shape::Square, c, 5.0);
         }
         for q in &b.inputs {
-            canvas.marker(q.rotate(axis), Shape::Dot, c, 8.0);
+            canvas.marker(q.rotate(axis), key.0, c, key.2);
         }
     }
     if view.frames > 0 {

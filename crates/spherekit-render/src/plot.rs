@@ -37,9 +37,12 @@ pub(crate) struct Panel {
     pub(crate) series: Vec<Series>,
 }
 
+/// The strip's text size in pixels per em at scale 1.
+pub(crate) const LABEL_EM: f32 = 14.0;
+
 /// The size of the strip's text (pixels per em) at `scale` (pixels per pixel-at-512).
 pub(crate) fn label_px(scale: f32) -> f32 {
-    (14.0 * scale).max(8.0)
+    (LABEL_EM * scale).max(8.0)
 }
 
 /// Draws the strip's frame into `area` (pixels): a light fill and a thin border. It does not
@@ -161,12 +164,15 @@ pub(crate) fn draw(
     let px = label_px(scale);
     let pad = 6.0 * scale;
     let cap = CAP_HEIGHT * px;
-    // The quantity above the plot, the time numbers below it.
+    // The quantity above the plot (smaller where it would not fit), the time numbers below it.
+    let room = area.width() - 2.0 * pad;
+    let wide = crate::text::width(&panel.quantity, px);
+    let qpx = if wide > room { px * room / wide } else { px };
     surface.text(
         area.left() + pad,
         area.top() + pad + cap,
         &panel.quantity,
-        px,
+        qpx,
         INK,
         Anchor::Start,
     );
@@ -215,12 +221,18 @@ pub(crate) fn draw(
         axis.push([Point::from_xy(x0, yz), Point::from_xy(x1, yz)]);
     }
     let (tticks, tdec) = fitting_ticks(t0, t1, width, px, 10.0 * scale);
-    // Below the value numbers' half height at zero, so that the two zeros do not touch.
+    // Below the value numbers' half height at zero; a number at the left edge starts there
+    // rather than reaching back under the value numbers, so that the two zeros stay apart.
     let numbers = y0 + 1.5 * cap + 2.0 * scale;
     for &t in &tticks {
         let (x, _) = map(t, 0.0);
         axis.push([Point::from_xy(x, y0), Point::from_xy(x, y0 + 3.0 * scale)]);
-        surface.text(x, numbers, &format_number(t, tdec), px, INK, Anchor::Middle);
+        let anchor = if x - x0 < 0.5 * scale {
+            Anchor::Start
+        } else {
+            Anchor::Middle
+        };
+        surface.text(x, numbers, &format_number(t, tdec), px, INK, anchor);
     }
     for a in &axis {
         surface.polyline(a, thin);

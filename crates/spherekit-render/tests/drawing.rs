@@ -101,3 +101,26 @@ fn nothing_or_two_spheres_is_an_error() {
         "curve 1 is on S3, curve 0 on S2: one drawing is on one sphere"
     );
 }
+
+#[test]
+fn the_omega_plot_names_its_frame_and_curves_are_named_by_method() {
+    let text = |frame: &str| {
+        format!(
+            r#"{{"space":"S3","curves":[{{"method":"squad","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0],[0.5,0.5,0.5,0.5]]}},
+            {{"method":"catmull-rom","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0],[0.5,0.5,0.5,0.5]]}}],
+            "view":{{"plot":"omega"{frame}}}}}"#
+        )
+    };
+    let space = render_svg(&Scene::from_json(&text("")).expect("scene"), 300).expect("SVG");
+    let body = render_svg(
+        &Scene::from_json(&text(r#","omega_frame":"body""#)).expect("scene"),
+        300,
+    )
+    .expect("SVG");
+    assert!(space.contains("angular velocity ω, space frame"), "{space}");
+    assert!(body.contains("angular velocity ω, body frame"), "{body}");
+    assert!(
+        space.contains(">Squad<") && space.contains(">Catmull–Rom<"),
+        "the legend names the methods: {space}"
+    );
+}

@@ -26,6 +26,12 @@ pub struct Param {
     pub spheres: Spheres,
     /// A solver setting rather than a shape parameter: the page gives it no control of its own.
     pub advanced: bool,
+    /// The setting it belongs to: `(parameter, value)` when it applies (and is needed) only
+    /// while that choice parameter has that value (the cubic's end velocities with `end`
+    /// `"clamped"`). The construction checks it; controls are set and cleared together.
+    pub requires: Option<(&'static str, &'static str)>,
+    /// Whether it is about the curve's ends, so that a closed loop has no use for it.
+    pub open_only: bool,
 }
 
 /// The type of a parameter, its default and its range.
@@ -102,6 +108,8 @@ impl Param {
             per_joint: None,
             spheres: Spheres::All,
             advanced: false,
+            requires: None,
+            open_only: false,
         }
     }
 
@@ -188,6 +196,18 @@ impl Param {
         self
     }
 
+    /// Applies to an open curve only (it is about the ends).
+    pub(crate) const fn open_only(mut self) -> Self {
+        self.open_only = true;
+        self
+    }
+
+    /// Applies only while choice parameter `param` is `value`.
+    pub(crate) const fn requires(mut self, param: &'static str, value: &'static str) -> Self {
+        self.requires = Some((param, value));
+        self
+    }
+
     /// The parameter as JSON (for `spherekit methods --json` and the page's controls).
     #[must_use]
     pub fn to_json(&self) -> Value {
@@ -214,6 +234,7 @@ impl Param {
             "type": kind,
             "spaces": self.spheres.names(),
             "advanced": self.advanced,
+            "open_only": self.open_only,
         });
         if let (Value::Object(o), Value::Object(e)) = (&mut out, extra) {
             o.extend(e);
@@ -222,6 +243,13 @@ impl Param {
                 match self.per_joint {
                     None => Value::Null,
                     Some(p) => json!({ "skip": p.skip, "first": p.first }),
+                },
+            );
+            o.insert(
+                "requires".into(),
+                match self.requires {
+                    None => Value::Null,
+                    Some((param, value)) => json!({ "param": param, "value": value }),
                 },
             );
         }

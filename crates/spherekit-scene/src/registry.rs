@@ -41,6 +41,8 @@ pub static METHODS: &[&Method] = &[
 pub struct Method {
     /// The scene id (`"squad"`).
     pub id: &'static str,
+    /// Its name for people (menus, legends): `"Catmull–Rom"`.
+    pub name: &'static str,
     /// The library type that implements it (`"Squad"`).
     pub type_name: &'static str,
     /// One line on what it is.
@@ -180,7 +182,7 @@ impl Method {
         })
     }
 
-    /// The descriptor as JSON: `{ "id", "type", "summary", "continuity", "source", "spaces",
+    /// The descriptor as JSON: `{ "id", "name", "type", "summary", "continuity", "source", "spaces",
     /// "knots", "min_points", "interpolates", "single_piece", "closes", "params": [...] }`
     /// (a closed curve has at least [`MIN_CLOSED_POINTS`] points and
     /// [`KnotRule::count_for`] knots), where `knots` is
@@ -190,6 +192,7 @@ impl Method {
     pub fn to_json(&self) -> Value {
         json!({
             "id": self.id,
+            "name": self.name,
             "type": self.type_name,
             "summary": self.summary,
             "continuity": self.continuity,

@@ -45,6 +45,7 @@ pub const MAX_TITLE_CHARS: usize = 120;
 ///                                                S2 and S3)
 ///           "plot_time": "shared" | "normalized", default "shared": one t axis for all curves
 ///           "frames": N,                         S3: body triads at N parameters (default 0)
+///           "omega_frame": "space" | "body",     S3: the frame of the plotted ω (default "space")
 ///           "accuracy": radians,                 curve flattening accuracy (default 1e-3)
 ///           "axes": ["x", "y", "z"],             S3: the body axes whose tips are traced
 ///                                                (default all three for one curve, ["x"] for several)
@@ -73,6 +74,9 @@ pub struct View {
     pub legend: bool,
     /// A line of text above the sphere.
     pub title: Option<String>,
+    /// Whether the plotted angular velocity ω (S³) is in the body frame (ω = 2q̄q′) rather
+    /// than the space frame (2q′q̄).
+    pub omega_body: bool,
 }
 
 /// The default flattening accuracy in radians: a quarter of a pixel at 1 000 px.
@@ -124,11 +128,12 @@ impl View {
             Some(Value::Object(m)) => m,
             Some(_) => return Err(bad("", "must be an object")),
         };
-        const OPTIONS: [&str; 8] = [
+        const OPTIONS: [&str; 9] = [
             "camera",
             "plot",
             "plot_time",
             "frames",
+            "omega_frame",
             "accuracy",
             "axes",
             "legend",
@@ -249,6 +254,23 @@ impl View {
                 usize::try_from(n).unwrap_or(0)
             }
         };
+        let omega_body = match map.get("omega_frame") {
+            None => false,
+            Some(v) => {
+                let body = match v.as_str() {
+                    Some("space") => false,
+                    Some("body") => true,
+                    _ => return Err(bad("omega_frame", "must be \"space\" or \"body\"")),
+                };
+                if !quaternions {
+                    return Err(bad(
+                        "omega_frame",
+                        "the frame of ω applies to S3 scenes only",
+                    ));
+                }
+                body
+            }
+        };
         let accuracy = match map.get("accuracy") {
             None => DEFAULT_FLATTENING_ACCURACY,
             Some(v) => v
@@ -288,6 +310,7 @@ impl View {
             plot_time,
             legend,
             title,
+            omega_body,
         })
     }
 }
@@ -328,6 +351,15 @@ mod tests {
     }
 
     #[test]
+    fn the_frame_of_omega_is_space_unless_body_is_asked_for() {
+        assert!(!view("{}", Space::S3, 1).expect("view").omega_body);
+        let space = view(r#"{"omega_frame": "space"}"#, Space::S3, 1).expect("view");
+        assert!(!space.omega_body, "space");
+        let body = view(r#"{"omega_frame": "body"}"#, Space::S3, 1).expect("view");
+        assert!(body.omega_body, "body");
+    }
+
+    #[test]
     fn bad_figure_options_name_the_field() {
         let long = format!(r#"{{"title": "{}"}}"#, "x".repeat(MAX_TITLE_CHARS + 1));
         for (json, space, expected) in [
@@ -358,6 +390,16 @@ mod tests {
                 r#"{"subtitle": "x"}"#,
                 Space::S2,
                 "view.subtitle: unknown view option",
+            ),
+            (
+                r#"{"omega_frame": "world"}"#,
+                Space::S3,
+                "view.omega_frame: must be \"space\" or \"body\"",
+            ),
+            (
+                r#"{"omega_frame": "body"}"#,
+                Space::S2,
+                "view.omega_frame: the frame of ω applies to S3 scenes only",
             ),
         ] {
             let e = view(json, space, 1).expect_err(json);

@@ -3,7 +3,7 @@ import type { Playground } from './spherekit_wasm.js';
 
 /** Options of {@link mount}. */
 export interface MountOptions {
-  /** Width of the view in CSS pixels (default 260); the canvas has `size × devicePixelRatio` pixels. */
+  /** The largest width of the view in CSS pixels (default: the element's width, which the view follows); the canvas has `width × devicePixelRatio` pixels. */
   size?: number;
   /**
    * URL of a spherekit playground page, relative to the document. When given, the view shows a
@@ -31,7 +31,7 @@ export interface WidgetHandle {
 export function mount(element: HTMLElement, scene: string, options?: MountOptions): Promise<WidgetHandle | null>;
 
 declare global {
-  /** `<spherekit-view scene="…" size="260" playground="…">`, defined when widget.js is loaded. */
+  /** `<spherekit-view scene="…" size="…" playground="…">`, defined when widget.js is loaded. */
   interface HTMLElementTagNameMap {
     'spherekit-view': HTMLElement;
   }

@@ -4,10 +4,12 @@
 // it from web/pkg/, the same package.
 //
 //   <script type="module" src="widget.js"></script>
-//   <spherekit-view size="260" scene='{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}'></spherekit-view>
+//   <spherekit-view scene='{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]]}'></spherekit-view>
 //
-// or from a module: import { mount } from './widget.js'; mount(element, sceneJsonText, { size: 260 }).
-// A bad scene shows the CLI's message as text in place of the view.
+// or from a module: import { mount } from './widget.js'; mount(element, sceneJsonText).
+// The view fills the width of its element (at most `size` CSS pixels when given) and follows
+// it when the page is resized; its plot and legend text is at least 11 CSS pixels. A bad scene
+// shows the CLI's message as text in place of the view.
 import init, * as sk from './spherekit_wasm.js';
 import { drawBodies } from './draw.js';
 
@@ -18,8 +20,12 @@ function ready() {
   return loading;
 }
 
+/** The smallest text of the figure, CSS pixels per em (as the playground's). */
+const MIN_TEXT = 11;
+
 const STYLE = `
-.skv { display: inline-flex; flex-direction: column; gap: 4px; font: 13px system-ui, sans-serif; }
+spherekit-view { display: block; min-width: 0; }
+.skv { display: flex; flex-direction: column; gap: 4px; font: 14px system-ui, sans-serif; max-width: 100%; }
 .skv-stage { position: relative; line-height: 0; }
 .skv-stage canvas { display: block; }
 .skv-overlay { position: absolute; left: 0; top: 0; cursor: grab; touch-action: none; }
@@ -39,19 +45,18 @@ function injectStyle() {
 }
 
 /**
- * Shows `scene` (JSON text) in `element`: the rendered sphere, drag to turn it, a play button
- * that animates t and, when `playground` (a URL, relative to the page) is given, a link that
- * opens the scene there (`<playground>#scene=…`). Resolves to a handle `{ pg, redraw, destroy }`,
- * or null for a bad scene (whose message is shown as text). `element.dataset.state` becomes
- * "ready" or "error".
+ * Shows `scene` (JSON text) in `element`: the rendered sphere, as wide as the element (at most
+ * `size` CSS pixels when given), drag to turn it, a play button that animates t and, when
+ * `playground` (a URL, relative to the page) is given, a link that opens the scene there
+ * (`<playground>#scene=…`). Resolves to a handle `{ pg, redraw, destroy }`, or null for a bad
+ * scene (whose message is shown as text). `element.dataset.state` becomes "ready" or "error".
  */
-export async function mount(element, scene, { size = 260, playground = null } = {}) {
+export async function mount(element, scene, { size = Infinity, playground = null } = {}) {
   await ready();
   injectStyle();
   element.replaceChildren();
   const root = document.createElement('div');
   root.className = 'skv';
-  root.style.width = `${size}px`;
   element.append(root);
   let pg;
   try {
@@ -65,7 +70,14 @@ export async function mount(element, scene, { size = 260, playground = null } = 
     return null;
   }
   const dpr = window.devicePixelRatio || 1;
-  const px = Math.max(64, Math.min(2048, Math.round(size * dpr)));
+  pg.set_min_text(MIN_TEXT * dpr);
+  let px = 0;
+  /** The render width for the element's current width. */
+  const fit = () => {
+    const css = Math.min(size, element.getBoundingClientRect().width || 260);
+    return Math.max(64, Math.min(2048, Math.round(css * dpr)));
+  };
+  px = fit();
   const stage = document.createElement('div');
   stage.className = 'skv-stage';
   const canvas = document.createElement('canvas');
@@ -173,24 +185,35 @@ export async function mount(element, scene, { size = 260, playground = null } = 
   });
 
   redraw();
+  // The column's width changes with the window: render at the new width.
+  const resized = new ResizeObserver(() => {
+    const next = fit();
+    if (next !== px) {
+      px = next;
+      redraw();
+    }
+  });
+  resized.observe(element);
   element.dataset.state = 'ready';
   return {
     pg,
     redraw,
     destroy() {
       playing = false;
+      resized.disconnect();
       element.replaceChildren();
       pg.free();
     },
   };
 }
 
-/** `<spherekit-view scene="…" size="260" playground="…">`: the widget as a custom element. */
+/** `<spherekit-view scene="…" size="…" playground="…">`: the widget as a custom element
+ * (`size`: the largest width, CSS pixels; without it the view fills the element's width). */
 class SpherekitView extends HTMLElement {
   connectedCallback() {
     if (this.started) return;
     this.started = true;
-    const size = Number(this.getAttribute('size')) || 260;
+    const size = Number(this.getAttribute('size')) || Infinity;
     const playground = this.getAttribute('playground');
     mount(this, this.getAttribute('scene') ?? '', { size, playground }).catch((e) => {
       this.textContent = `error: ${e.message}`;

@@ -28,8 +28,8 @@ use spherekit::{
     angular_velocity_acceleration_body,
 };
 use spherekit_render::{
-    Camera, PALETTE, PlotAxes, Prepared, RenderCache, camera_of, prepare, render_built,
-    turn_towards,
+    AXIS_COLORS, Camera, PALETTE, PlotAxes, Prepared, RenderCache, camera_of, prepare_with_text,
+    render_built, turn_towards,
 };
 use spherekit_scene::{
     BuiltCurve, Document, EditError, Plot, PlotTime, SAMPLE_FIELDS, SampleOptions, Scene,
@@ -319,11 +319,13 @@ pub struct Playground {
     plots: Vec<PlotAxes>,
     /// The last figure laid out, with its key (the document's layout generation and the
     /// size): turning the view renders it again without flattening or sampling.
-    prepared: Option<((u64, u32), Prepared)>,
+    prepared: Option<((u64, u32, u32), Prepared)>,
     /// What the last frames left for the next (the backdrop, the stroker's buffer, glyphs).
     cache: RenderCache,
     /// What the last failed edit's solver reported (see [`Playground::failure`]).
     failure: Option<SolveFailure>,
+    /// The smallest text, pixels per em (see [`Playground::set_min_text`]).
+    min_text: f32,
 }
 
 /// An iterative solver that gave up during an edit: the residual it stopped at (for the Beta
@@ -382,6 +384,7 @@ impl Playground {
             prepared: None,
             cache: RenderCache::default(),
             failure: None,
+            min_text: 0.0,
         })
     }
 
@@ -440,6 +443,17 @@ impl Playground {
                 let [r, g, b] = c.color.unwrap_or(PALETTE[i % PALETTE.len()]);
                 json!(format!("#{r:02x}{g:02x}{b:02x}"))
             })
+            .collect();
+        Value::Array(list).to_string()
+    }
+
+    /// The colours of the body x, y and z axes (and of ω's components for one curve), as
+    /// `["#rrggbb", …]` JSON.
+    #[must_use]
+    pub fn axis_colors(&self) -> String {
+        let list: Vec<Value> = AXIS_COLORS
+            .iter()
+            .map(|[r, g, b]| json!(format!("#{r:02x}{g:02x}{b:02x}")))
             .collect();
         Value::Array(list).to_string()
     }
@@ -576,7 +590,8 @@ impl Playground {
     }
 
     /// The view options the scene is drawn with, defaults filled in, as JSON: `{ "plot":
-    /// "speed" | "omega" | "none", "legend", "axes": ["x", …], "frames" }` (the panel's
+    /// "speed" | "omega" | "none", "legend", "axes": ["x", …], "frames", "omega_frame":
+    /// "space" | "body" }` (the panel's
     /// toggles show these).
     #[must_use]
     pub fn view_options(&self) -> String {
@@ -587,8 +602,12 @@ impl Playground {
             Plot::None => "none",
         };
         let axes: Vec<&str> = view.axes.iter().map(|&k| ["x", "y", "z"][k % 3]).collect();
-        json!({ "plot": plot, "legend": view.legend, "axes": axes, "frames": view.frames })
-            .to_string()
+        let omega_frame = if view.omega_body { "body" } else { "space" };
+        json!({
+            "plot": plot, "legend": view.legend, "axes": axes, "frames": view.frames,
+            "omega_frame": omega_frame,
+        })
+        .to_string()
     }
 
     /// The camera the scene is drawn with, `[w, x, y, z]` (the default one when the scene has
@@ -883,6 +902,17 @@ impl Playground {
         report(self.doc.curves()).to_string()
     }
 
+    /// Sets the smallest text of the frames rendered from now on, in pixels per em (a page
+    /// passes 11 CSS pixels times its device pixel ratio so that a small figure stays
+    /// readable); 0, the default, draws the figure as the CLI and the golden images do.
+    pub fn set_min_text(&mut self, pixels: f32) {
+        self.min_text = if pixels.is_finite() {
+            pixels.max(0.0)
+        } else {
+            0.0
+        };
+    }
+
     /// Renders the built curves into the handle's frame (`size` wide) without rebuilding.
     /// Returns the frame's height.
     ///
@@ -891,11 +921,12 @@ impl Playground {
     /// The CLI's message for a bad view or size.
     pub fn render(&mut self, size: u32) -> Result<u32, JsError> {
         let (scene, curves) = (self.doc.scene(), self.doc.curves());
-        // The layout is kept while the document's layout generation and the size are the same.
-        let key = (self.doc.layout_generation(), size);
+        // The layout is kept while the document's layout generation, the size and the text
+        // floor are the same.
+        let key = (self.doc.layout_generation(), size, self.min_text.to_bits());
         let prepared = match self.prepared.take() {
             Some((k, p)) if k == key => p,
-            _ => prepare(scene, curves, size).map_err(js)?,
+            _ => prepare_with_text(scene, curves, size, self.min_text).map_err(js)?,
         };
         let rendered = prepared.render_with(scene, curves, &mut self.cache);
         self.prepared = Some((key, prepared));

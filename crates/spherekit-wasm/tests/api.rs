@@ -406,12 +406,37 @@ fn view_options_fill_in_the_renderers_defaults() {
     );
     let chosen = v(
         r#"{"space":"S3","method":"squad","points":[[1,0,0,0],[0,1,0,0]],
-        "view":{"plot":"omega","legend":false,"axes":["z"],"frames":4}}"#,
+        "view":{"plot":"omega","legend":false,"axes":["z"],"frames":4,"omega_frame":"body"}}"#,
     );
     assert_eq!(
         chosen,
-        serde_json::json!({"plot":"omega","legend":false,"axes":["z"],"frames":4})
+        serde_json::json!({"plot":"omega","legend":false,"axes":["z"],"frames":4,"omega_frame":"body"})
     );
+    assert_eq!(
+        s3["omega_frame"], "space",
+        "ω in the space frame by default"
+    );
+}
+
+#[wasm_bindgen_test]
+fn the_text_floor_changes_the_layout_only_when_it_is_above_the_figures_text() {
+    let scene = r#"{"space":"S3","method":"squad","points":[[1,0,0,0],[0.9,0.3,0.3,0],[0.7,0,0.7,0]],
+        "view":{"plot":"omega"}}"#;
+    let mut pg = Playground::new(scene).unwrap();
+    let plain = pg.render(256).unwrap();
+    pg.set_min_text(1.0);
+    assert_eq!(
+        pg.render(256).unwrap(),
+        plain,
+        "a floor under the figure's text changes nothing"
+    );
+    pg.set_min_text(22.0);
+    assert!(
+        pg.render(256).unwrap() > plain,
+        "a higher floor makes the plots and legend taller"
+    );
+    pg.set_min_text(f32::NAN);
+    assert_eq!(pg.render(256).unwrap(), plain, "NaN is no floor");
 }
 
 /// A scene of `method` on the first sphere it takes, with extra curve fields.

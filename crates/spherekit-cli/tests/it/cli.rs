@@ -576,7 +576,7 @@ fn render_writes_svg_with_every_legend_entry() {
     for entry in [
         "two curves",
         "squad & <friends>",
-        "bezier",
+        "Bézier",
         "(traced: tip of body x)",
         "ω x",
         "ω y",

@@ -22,6 +22,7 @@ pub(crate) const ORDER: Param = Param::integer(
 
 pub(crate) static METHOD: Method = Method {
     id: "arc-blend",
+    name: "Arc blend",
     type_name: "ArcBlend",
     summary: "Pobegailo's interpolating Cⁿ spline blending circle arcs",
     continuity: "Cⁿ (n = order ≤ 10)",

@@ -14,6 +14,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "beta",
+    name: "Beta spline",
     type_name: "BetaSpline",
     summary: "spherical Beta spline with bias β₁ and tension β₂, interpolating by a Newton solver",
     continuity: "G¹ (C¹ at β₁ = 1)",

@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "bezier",
+    name: "Bézier",
     type_name: "Bezier",
     summary: "spherical Bézier curve of any degree by de Casteljau",
     continuity: "C^∞",

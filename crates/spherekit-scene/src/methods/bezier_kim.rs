@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "bezier-kim",
+    name: "Kim's Bézier",
     type_name: "BezierKim",
     summary: "Kim-Kim-Shin cumulative Bézier quaternion curve",
     continuity: "C^∞",

@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "bspline-kim",
+    name: "Kim's B-spline",
     type_name: "BsplineKim",
     summary: "Kim-Kim-Shin cumulative cubic B-spline quaternion curve (C², approximating)",
     continuity: "C²",

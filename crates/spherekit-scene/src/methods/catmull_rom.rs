@@ -13,6 +13,7 @@ use crate::scene::{Input, Points};
 
 pub(crate) static METHOD: Method = Method {
     id: "catmull-rom",
+    name: "Catmull–Rom",
     type_name: "CatmullRom",
     summary: "Catmull-Rom spline by slerps (first and last points steer the ends; closed: every point a key)",
     continuity: "C¹",

@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "catmull-rom-nlerp",
+    name: "Normalised Catmull–Rom",
     type_name: "CatmullRomNlerp",
     summary: "Euclidean Catmull-Rom of the points in ℝ^(m+1) (ℝ⁴ for quaternions), normalised: not constant speed, off the great circles (first and last points steer the ends; closed: every point a key)",
     continuity: "C¹",

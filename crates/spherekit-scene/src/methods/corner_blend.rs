@@ -14,6 +14,7 @@ use crate::scene::{Input, Points};
 
 pub(crate) static METHOD: Method = Method {
     id: "corner-blend",
+    name: "Corner blend",
     type_name: "CornerBlend",
     summary: "Pobegailo's corner smoothing of a polyline of great-circle (S2: or small-circle) arcs",
     continuity: "Cⁿ (n = order ≤ 10)",

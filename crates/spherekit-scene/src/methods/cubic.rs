@@ -15,8 +15,9 @@ use crate::scene::{Input, Points};
 
 pub(crate) static METHOD: Method = Method {
     id: "cubic",
+    name: "Cubic spline",
     type_name: "CubicSpline",
-    summary: "C² cubic spline through the keys at their times (scipy's RotationSpline on S³)",
+    summary: "C² cubic spline through the points (keys) at their times",
     continuity: "C²",
     source: "cubic in the tangent space of each key, as scipy.spatial.transform.RotationSpline (Virtanen et al. 2020)",
     spheres: Spheres::All,
@@ -31,24 +32,31 @@ pub(crate) static METHOD: Method = Method {
             "end",
             "end condition: natural (zero angular acceleration), clamped (given end velocities) or scipy's (mean rates of the end segments)",
             &["natural", "clamped", "scipy"],
-        ),
+        )
+        .open_only(),
         Param::vector(
             "start_velocity",
             "start velocity",
             "with end \"clamped\": S3 the angular velocity [x, y, z] at the first key (in params.frame), elsewhere a tangent vector there",
-        ),
+        )
+        .requires("end", "clamped")
+        .open_only(),
         Param::vector(
             "end_velocity",
             "end velocity",
             "with end \"clamped\": the same at the last key",
-        ),
+        )
+        .requires("end", "clamped")
+        .open_only(),
         Param::choice(
             "frame",
             "frame",
             "S3: the frame of the clamped angular velocities, space (ω = 2q′q̄) or body (2q̄q′, scipy's)",
             &["space", "body"],
         )
-        .s3_only(),
+        .s3_only()
+        .requires("end", "clamped")
+        .open_only(),
     ],
     build,
 };

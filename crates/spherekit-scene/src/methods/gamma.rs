@@ -14,6 +14,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "gamma",
+    name: "Gamma spline",
     type_name: "GammaSpline",
     summary: "Gamma quaternion spline (Boehm's Gamma spline on S³)",
     continuity: "C¹ (C² under a condition on γ and the knots)",

@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "geodesic",
+    name: "Great-circle arcs (slerp)",
     type_name: "GeodesicSpline",
     summary: "piecewise geodesic (slerp) through the points",
     continuity: "C⁰",

@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "nlerp",
+    name: "Normalised lerp (nlerp)",
     type_name: "NlerpSpline",
     summary: "piecewise normalised-linear interpolation through the points",
     continuity: "C⁰",

@@ -12,6 +12,7 @@ use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
     id: "squad",
+    name: "Squad",
     type_name: "Squad",
     summary: "Shoemake's squad through keys",
     continuity: "C¹",
