@@ -76,7 +76,7 @@ use crate::error::SplineError;
 use crate::flow::{PlaneRotation, Segment, Weights};
 use crate::knots::Knots;
 use crate::manifold::{Manifold, renormalize};
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 use crate::recast::{Recast, to_sn};
 use crate::smoothing::SmoothingPolynomials;
 
@@ -539,8 +539,8 @@ impl<P: Manifold> ArcBlend<P> {
     }
 
     /// The construction of [`try_with`](Self::try_with) and
-    /// [`try_with_closed`](Self::try_with_closed), on checked points: natively on `P`
-    /// itself, in the wasm build once on S^m for every point type ([`crate::recast`]; the same
+    /// [`try_with_closed`](Self::try_with_closed), on checked points: on `P` itself, or with
+    /// the `compact` feature once on S^m for every point type ([`crate::recast`]; the same
     /// bits, `tests::the_construction_gives_the_same_bits_on_sn`).
     fn build(
         points: Vec<P>,
@@ -548,14 +548,14 @@ impl<P: Manifold> ArcBlend<P> {
         timing: ArcBlendTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, order, timing, closed);
-        #[cfg(target_arch = "wasm32")]
+        #[cfg(feature = "compact")]
         return Self::construct_on_sn(points, order, timing, closed);
     }
 
     /// [`construct`](Self::construct) on the keys as points of S^m, the result converted back.
-    #[cfg(any(test, target_arch = "wasm32"))]
+    #[cfg(any(test, feature = "compact"))]
     fn construct_on_sn(
         points: Vec<P>,
         order: usize,
@@ -911,7 +911,7 @@ mod tests {
     use super::*;
     use crate::recast::keys;
 
-    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// The `compact` build constructs on S^m and converts back; every field (and every error) must
     /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
     /// each `f64` in the shortest form that reads back to the same bits).
     #[test]

@@ -190,7 +190,7 @@ impl<P: Manifold> CircleArc<P> {
     }
 }
 
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 impl CircleArc<crate::SnPoint> {
     /// The same arc on the point type `Q` ([`crate::recast`]).
     pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CircleArc<Q> {

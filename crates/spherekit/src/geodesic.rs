@@ -8,7 +8,7 @@ use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 use crate::recast::{Recast, to_sn};
 
 /// Checks that there are at least `min` points and no antipodal neighbours.
@@ -137,18 +137,18 @@ impl<P: Manifold> GeodesicSpline<P> {
     }
 
     /// The arcs between consecutive `points` (the loop's already wrapped; at least two):
-    /// natively on `P` itself, in the wasm build once on S^m for every point type
+    /// on `P` itself, or with the `compact` feature once on S^m for every point type
     /// ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
     fn build(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, closed);
-        #[cfg(target_arch = "wasm32")]
+        #[cfg(feature = "compact")]
         return Self::construct_on_sn(points, knots, closed);
     }
 
     /// [`construct`](Self::construct) on the points as points of S^m, the result converted
     /// back.
-    #[cfg(any(test, target_arch = "wasm32"))]
+    #[cfg(any(test, feature = "compact"))]
     fn construct_on_sn(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
         let to = Recast::to(&points[0]);
         let sn = points.iter().map(to_sn).collect();
@@ -400,7 +400,7 @@ mod tests {
     use super::*;
     use crate::recast::keys;
 
-    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// The `compact` build constructs on S^m and converts back; every field (and every error) must
     /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
     /// each `f64` in the shortest form that reads back to the same bits).
     #[test]

@@ -102,6 +102,11 @@
 //! - `libm`: route every transcendental function through the `libm` crate, so that native and
 //!   WebAssembly builds give bit-identical results. Enable it in binaries that render.
 //! - `serde`: `Serialize` for points.
+//! - `compact`: compile each construction whose arithmetic is the same on every sphere (arc
+//!   blend, Beta spline, intrinsic Catmull–Rom, geodesic, cubic) once, on S^m, converting the
+//!   keys and the built curve: smaller code (the browser build turns it on), the same bits,
+//!   construction slower (the conversions, and `VecN` arithmetic, which allocates).
+//!   Evaluation is unchanged.
 
 #![cfg_attr(docsrs, feature(doc_auto_cfg))]
 
@@ -131,7 +136,7 @@ mod knots;
 mod manifold;
 mod math;
 pub mod quaternion;
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 mod recast;
 mod rotation;
 mod rotation_loop;

@@ -1,7 +1,7 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Constructions run once, on S^m, in the wasm build.
+//! Constructions run once, on S^m: the `compact` feature.
 //!
 //! Every [`Manifold`] operation is a default method over [`Ambient`], and the ambient types do
 //! the same arithmetic coordinate by coordinate: glam's `DVec3::dot`/`DVec4::dot` is
@@ -9,12 +9,13 @@
 //! −0.0 (`−0.0 + a = a` exactly); sums, differences and scalings are per coordinate in both.
 //! So a construction whose arithmetic never leaves the `Manifold`/`Ambient` operations gives
 //! the same bits on [`SnPoint`] as on [`S2Point`](crate::S2Point) or
-//! [`UnitQuat`](crate::UnitQuat) with the same coordinates. The wasm build uses that to keep
-//! one copy of such constructions in the .wasm instead of three: it converts the keys to
-//! `SnPoint`, builds there, and converts the built curve back ([`Recast`]), so the curve is
-//! evaluated on its own point type (a `VecN` jet allocates). Native builds construct on the
-//! point type itself (no conversions). Each construction that does this has a test that both
-//! paths give the same bits.
+//! [`UnitQuat`](crate::UnitQuat) with the same coordinates. With the `compact` feature (which
+//! the browser build turns on, to keep the .wasm small) such constructions are compiled once
+//! instead of once per point type: the keys are converted to `SnPoint`, the curve is built
+//! there and converted back ([`Recast`]), so it is evaluated on its own point type (a `VecN`
+//! jet would allocate). Without the feature the constructions run on the point type itself
+//! (no conversions). Each construction that does this has a test that both paths give the
+//! same bits, compiled whether the feature is on or not.
 
 use crate::ambient::{Ambient, VecN};
 use crate::manifold::Manifold;

@@ -35,7 +35,7 @@ use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame_sin_cos, renormalize};
 use crate::math;
 use crate::s3::UnitQuat;
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 use crate::{
     ambient::VecN,
     recast::{Recast, to_sn},
@@ -273,18 +273,18 @@ impl<P: Manifold> CubicSpline<P> {
         end: CubicEnd<P::Vector>,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        // Natively on `P` itself; in the wasm build once on S^m for every point type
+        // On `P` itself; with the `compact` feature once on S^m for every point type
         // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, end, closed);
-        #[cfg(target_arch = "wasm32")]
+        #[cfg(feature = "compact")]
         return Self::construct_on_sn(points, knots, end, closed);
     }
 
     /// [`construct`](Self::construct) on the keys as points of S^m, the built curve converted
     /// back (the keys and the end condition are kept as given: the conversion copies
     /// coordinates).
-    #[cfg(any(test, target_arch = "wasm32"))]
+    #[cfg(any(test, feature = "compact"))]
     fn construct_on_sn(
         points: Vec<P>,
         knots: Option<Vec<f64>>,

@@ -7,7 +7,7 @@ use super::fixed::{FixedSolver, Vf, invertf, vf};
 use super::*;
 use crate::recast::keys;
 
-/// The wasm build constructs on S^m and converts back; every field (and every error) must
+/// The `compact` build constructs on S^m and converts back; every field (and every error) must
 /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
 /// each `f64` in the shortest form that reads back to the same bits).
 #[test]
