@@ -5,7 +5,7 @@
 
 use serde_json::{Map, Value, json};
 use spherekit::{
-    Ambient, Curve, Jet, JointContinuity, Manifold, PointError, S2Point, SnPoint, UnitQuat, VecN,
+    Ambient, Curve, Jet, JointContinuity, Manifold, PointError, S2Point, SmPoint, UnitQuat, VecN,
     angular_velocity_acceleration, angular_velocity_acceleration_body,
 };
 
@@ -256,7 +256,7 @@ pub enum BuiltCurve {
     /// A curve of orientations.
     S3(Built<UnitQuat>),
     /// A curve on S^m.
-    Sn(Built<SnPoint>),
+    Sm(Built<SmPoint>),
 }
 
 /// Builds the same expression on every sphere: `on_every_sphere!(points, |p| expr)` matches
@@ -269,7 +269,7 @@ macro_rules! on_every_sphere {
         match $points {
             $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
             $crate::scene::Points::S3($p) => $crate::built::BuiltCurve::S3($body),
-            $crate::scene::Points::Sn($p) => $crate::built::BuiltCurve::Sn($body),
+            $crate::scene::Points::Sm($p) => $crate::built::BuiltCurve::Sm($body),
         }
     };
 }
@@ -310,7 +310,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.sample_field(scene, field),
             Self::S3(b) => b.sample_field(scene, field),
-            Self::Sn(b) => b.sample_field(scene, field),
+            Self::Sm(b) => b.sample_field(scene, field),
         }
     }
 
@@ -323,7 +323,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.sample_into(scene, options, out),
             Self::S3(b) => b.sample_into(scene, options, out),
-            Self::Sn(b) => b.sample_into(scene, options, out),
+            Self::Sm(b) => b.sample_into(scene, options, out),
         }
     }
 
@@ -333,7 +333,7 @@ impl BuiltCurve {
         let info = match &mut self {
             Self::S2(b) => &mut b.info,
             Self::S3(b) => &mut b.info,
-            Self::Sn(b) => &mut b.info,
+            Self::Sm(b) => &mut b.info,
         };
         info.insert(key.into(), value);
         self
@@ -344,7 +344,7 @@ impl BuiltCurve {
         match &mut self {
             Self::S2(b) => b.order = order,
             Self::S3(b) => b.order = order,
-            Self::Sn(b) => b.order = order,
+            Self::Sm(b) => b.order = order,
         }
         self
     }
@@ -355,7 +355,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => (b.continuity(), b.order),
             Self::S3(b) => (b.continuity(), b.order),
-            Self::Sn(b) => (b.continuity(), b.order),
+            Self::Sm(b) => (b.continuity(), b.order),
         }
     }
 
@@ -365,7 +365,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.curve.domain(),
             Self::S3(b) => b.curve.domain(),
-            Self::Sn(b) => b.curve.domain(),
+            Self::Sm(b) => b.curve.domain(),
         }
     }
 }
@@ -450,12 +450,12 @@ impl ScenePoint for UnitQuat {
     }
 }
 
-impl ScenePoint for SnPoint {
+impl ScenePoint for SmPoint {
     fn from_coords(c: &[f64]) -> Result<Self, PointError> {
         Self::try_new(c.to_vec())
     }
     fn coords(&self) -> Vec<f64> {
-        SnPoint::coords(self).to_vec()
+        SmPoint::coords(self).to_vec()
     }
     fn vector_coords(v: &VecN) -> Vec<f64> {
         v.to_vec()
@@ -464,9 +464,9 @@ impl ScenePoint for SnPoint {
         Some(VecN::from(c.to_vec()))
     }
     fn space(&self) -> Space {
-        Space::Sn(self.coords().len().saturating_sub(1))
+        Space::Sm(self.coords().len().saturating_sub(1))
     }
     fn into_built_curve(built: Built<Self>) -> BuiltCurve {
-        BuiltCurve::Sn(built)
+        BuiltCurve::Sm(built)
     }
 }

@@ -416,7 +416,7 @@ fn view_options_fill_in_the_renderers_defaults() {
 
 /// A scene of `method` on the first sphere it takes, with extra curve fields.
 fn timing_scene(m: &spherekit_scene::Method, extra: &str) -> String {
-    let s3 = m.spheres == spherekit_scene::Spheres::S3;
+    let s3 = m.spaces == spherekit_scene::Spaces::S3;
     // A loop goes around (a closed spline through an open path's points may not exist).
     let points = match (s3, extra.contains(r#""closed":true"#)) {
         (true, false) => {

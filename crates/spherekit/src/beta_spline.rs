@@ -14,7 +14,7 @@ use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::{PointError, SolveError, SplineError};
 use crate::manifold::Manifold;
 #[cfg(any(test, feature = "compact"))]
-use crate::recast::{Recast, to_sn};
+use crate::recast::{Recast, to_sm};
 use crate::slerp_jet::ScalarJet;
 
 /// Two consecutive data points closer than this (radians) are [`SplineError::Coincident`]
@@ -340,7 +340,7 @@ impl<P: Manifold> BetaSpline<P> {
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 2 points;
     /// - [`SplineError::InvalidPoint`] with [`PointError::WrongDimension`] for points of
-    ///   spheres of different dimensions ([`SnPoint`](crate::SnPoint));
+    ///   spheres of different dimensions ([`SmPoint`](crate::SmPoint));
     /// - [`SplineError::InvalidParameter`] (`beta1`, `beta2`, `tolerance`,
     ///   `residual_tolerance`, `max_iterations`) for values out of range, non-finite, or lists
     ///   of a length other than `n + 1`;
@@ -386,7 +386,7 @@ impl<P: Manifold> BetaSpline<P> {
     /// The construction of [`try_new`](Self::try_new) and
     /// [`try_new_closed`](Self::try_new_closed): on `P` itself, or with the `compact` feature
     /// once on S^m for every point type ([`crate::recast`]; the same bits,
-    /// `tests::the_construction_gives_the_same_bits_on_sn`).
+    /// `tests::the_construction_gives_the_same_bits_on_sm`).
     fn build(points: Vec<P>, params: &BetaParams, closed: bool) -> Result<Self, SplineError> {
         let min = if closed { 3 } else { 2 };
         if points.len() < min {
@@ -398,20 +398,20 @@ impl<P: Manifold> BetaSpline<P> {
         #[cfg(not(feature = "compact"))]
         return Self::construct(points, params, closed);
         #[cfg(feature = "compact")]
-        return Self::construct_on_sn(points, params, closed);
+        return Self::construct_on_sm(points, params, closed);
     }
 
     /// [`construct`](Self::construct) on the points as points of S^m, the result converted
     /// back; `points` is not empty.
     #[cfg(any(test, feature = "compact"))]
-    fn construct_on_sn(
+    fn construct_on_sm(
         points: Vec<P>,
         params: &BetaParams,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let to = Recast::to(&points[0]);
-        let sn = points.iter().map(to_sn).collect();
-        let c = BetaSpline::construct(sn, params, closed)?;
+        let sm = points.iter().map(to_sm).collect();
+        let c = BetaSpline::construct(sm, params, closed)?;
         Ok(Self {
             points: to.points(&c.points),
             aux: to.points(&c.aux),
@@ -942,7 +942,7 @@ mod tests {
     /// S^m construction of these keys runs the `DVec3`/`DVec4` kernel; that the `compact`
     /// build's `VecN` kernel gives the same bits is `the_kernel_gives_the_same_bits_in_vecn`.)
     #[test]
-    fn the_construction_gives_the_same_bits_on_sn() {
+    fn the_construction_gives_the_same_bits_on_sm() {
         fn check<P: Manifold>(points: &[P]) -> usize {
             let mut built = 0;
             let m = points.len();
@@ -965,9 +965,9 @@ mod tests {
                                 ..BetaParams::default()
                             };
                             let native = BetaSpline::construct(points.to_vec(), &params, closed);
-                            let on_sn =
-                                BetaSpline::construct_on_sn(points.to_vec(), &params, closed);
-                            built += keys::same_bits(&native, &on_sn, &(points, &params, closed));
+                            let on_sm =
+                                BetaSpline::construct_on_sm(points.to_vec(), &params, closed);
+                            built += keys::same_bits(&native, &on_sm, &(points, &params, closed));
                         }
                     }
                 }

@@ -300,7 +300,7 @@ pub struct CubicSegment<P: Manifold> {
 }
 
 #[cfg(any(test, feature = "compact"))]
-impl CubicSegment<crate::SnPoint> {
+impl CubicSegment<crate::SmPoint> {
     /// The same segment on the point type `Q` ([`crate::recast`]).
     pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CubicSegment<Q> {
         CubicSegment {

@@ -191,7 +191,7 @@ impl<P: Manifold> CircleArc<P> {
 }
 
 #[cfg(any(test, feature = "compact"))]
-impl CircleArc<crate::SnPoint> {
+impl CircleArc<crate::SmPoint> {
     /// The same arc on the point type `Q` ([`crate::recast`]).
     pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CircleArc<Q> {
         CircleArc {

@@ -144,12 +144,12 @@ mod s2;
 mod s3;
 mod section;
 mod slerp_jet;
+mod sm;
 mod smoothing;
-mod sn;
 mod squad;
 
 pub use ambient::{Ambient, VecN};
-pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
+pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_SMOOTHNESS};
 pub use arclength::{ArcLength, ArcLengthInfo, DEFAULT_ARC_LENGTH_ACCURACY, Stall};
 pub use beta_spline::{
     BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
@@ -183,8 +183,8 @@ pub use s3::{
 };
 pub use section::PlaneSection;
 pub use slerp_jet::{ScalarJet, slerp_jet};
+pub use sm::SmPoint;
 pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
-pub use sn::SnPoint;
 pub use squad::Squad;
 
 /// The README's Rust example, compiled and run as a doctest.

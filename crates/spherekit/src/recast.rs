@@ -8,10 +8,10 @@
 //! `x·x′ + y·y′ + z·z′ (+ w·w′)` from left to right, [`VecN`]'s the same sum starting from
 //! −0.0 (`−0.0 + a = a` exactly); sums, differences and scalings are per coordinate in both.
 //! So a construction whose arithmetic never leaves the `Manifold`/`Ambient` operations gives
-//! the same bits on [`SnPoint`] as on [`S2Point`](crate::S2Point) or
+//! the same bits on [`SmPoint`] as on [`S2Point`](crate::S2Point) or
 //! [`UnitQuat`](crate::UnitQuat) with the same coordinates. With the `compact` feature (which
 //! the browser build turns on, to keep the .wasm small) such constructions are compiled once
-//! instead of once per point type: the keys are converted to `SnPoint`, the curve is built
+//! instead of once per point type: the keys are converted to `SmPoint`, the curve is built
 //! there and converted back ([`Recast`]), so it is evaluated on its own point type (a `VecN`
 //! jet would allocate). Without the feature the constructions run on the point type itself
 //! (no conversions). Each construction that does this has a test that both paths give the
@@ -19,11 +19,11 @@
 
 use crate::ambient::{Ambient, VecN};
 use crate::manifold::Manifold;
-use crate::sn::SnPoint;
+use crate::sm::SmPoint;
 
 /// The point `p` as a point of S^m with the same coordinates.
-pub(crate) fn to_sn<P: Manifold>(p: &P) -> SnPoint {
-    SnPoint::from_vector_unchecked(VecN::new(p.to_vector().to_vec()))
+pub(crate) fn to_sm<P: Manifold>(p: &P) -> SmPoint {
+    SmPoint::from_vector_unchecked(VecN::new(p.to_vector().to_vec()))
 }
 
 /// Converts vectors and points to the point type `Q`, coordinate by coordinate.
@@ -46,12 +46,12 @@ impl<Q: Manifold> Recast<Q> {
     }
 
     /// The point of `Q` with the coordinates of `p`.
-    pub(crate) fn point(&self, p: &SnPoint) -> Q {
+    pub(crate) fn point(&self, p: &SmPoint) -> Q {
         Q::from_vector_unchecked(self.like.with_coords(p.coords()))
     }
 
     /// [`point`](Self::point) of every point of `ps`.
-    pub(crate) fn points(&self, ps: &[SnPoint]) -> Vec<Q> {
+    pub(crate) fn points(&self, ps: &[SmPoint]) -> Vec<Q> {
         ps.iter().map(|p| self.point(p)).collect()
     }
 }
@@ -70,10 +70,10 @@ pub(crate) mod keys {
     /// back to the same bits); `context` is printed when they differ.
     pub(crate) fn same_bits<T: Debug, E: Debug>(
         native: &Result<T, E>,
-        on_sn: &Result<T, E>,
+        on_sm: &Result<T, E>,
         context: &dyn Debug,
     ) -> usize {
-        assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{context:?}");
+        assert_eq!(format!("{native:?}"), format!("{on_sm:?}"), "{context:?}");
         usize::from(native.is_ok())
     }
 

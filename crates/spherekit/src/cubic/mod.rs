@@ -38,8 +38,8 @@ use crate::s3::UnitQuat;
 #[cfg(any(test, feature = "compact"))]
 use crate::{
     ambient::VecN,
-    recast::{Recast, to_sn},
-    sn::SnPoint,
+    recast::{Recast, to_sm},
+    sm::SmPoint,
 };
 
 use equations::{Geometry, SegConst, dot, sinc_deriv};
@@ -74,9 +74,9 @@ pub enum CubicEnd<V> {
     /// time parameter). On S³ see [`CubicEnd::clamped_angular_body`].
     Clamped {
         /// The velocity at the first key, tangent there.
-        start: V,
+        start_velocity: V,
         /// The velocity at the last key, tangent there.
-        end: V,
+        end_velocity: V,
     },
     /// scipy's `RotationSpline` end condition: the velocity at the first key is the mean
     /// velocity of the first segment, `Log_{p₀}(p₁)/h₀`, and at the last key that of the last
@@ -90,8 +90,8 @@ impl CubicEnd<DVec4> {
     #[must_use]
     pub fn clamped_angular_body(first: UnitQuat, start: DVec3, last: UnitQuat, end: DVec3) -> Self {
         Self::Clamped {
-            start: crate::s3::velocity_from_angular_body(first, start),
-            end: crate::s3::velocity_from_angular_body(last, end),
+            start_velocity: crate::s3::velocity_from_angular_body(first, start),
+            end_velocity: crate::s3::velocity_from_angular_body(last, end),
         }
     }
 
@@ -100,8 +100,8 @@ impl CubicEnd<DVec4> {
     #[must_use]
     pub fn clamped_angular(first: UnitQuat, start: DVec3, last: UnitQuat, end: DVec3) -> Self {
         Self::Clamped {
-            start: crate::s3::velocity_from_angular(first, start),
-            end: crate::s3::velocity_from_angular(last, end),
+            start_velocity: crate::s3::velocity_from_angular(first, start),
+            end_velocity: crate::s3::velocity_from_angular(last, end),
         }
     }
 }
@@ -147,9 +147,17 @@ impl CubicSpline<UnitQuat> {
         let last = keys.last().copied();
         crate::unflip(&mut keys);
         let end = match (end, last, keys.last()) {
-            (CubicEnd::Clamped { start, end }, Some(given), Some(&now)) if given != now => {
-                CubicEnd::Clamped { start, end: -end }
-            }
+            (
+                CubicEnd::Clamped {
+                    start_velocity,
+                    end_velocity,
+                },
+                Some(given),
+                Some(&now),
+            ) if given != now => CubicEnd::Clamped {
+                start_velocity,
+                end_velocity: -end_velocity,
+            },
             (end, ..) => end,
         };
         Self::try_new(keys, knots, end, false)
@@ -255,7 +263,7 @@ impl<P: Manifold> CubicSpline<P> {
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 2 points (3 when `closed`);
     /// - [`SplineError::InvalidPoint`] with [`PointError::WrongDimension`] for points of spheres of
-    ///   different dimensions ([`SnPoint`](crate::SnPoint));
+    ///   different dimensions ([`SmPoint`](crate::SmPoint));
     /// - [`SplineError::Antipodal`] for antipodal consecutive points and
     ///   [`SplineError::AntipodalClosing`] for an antipodal last and first point when `closed`;
     /// - the knot errors of [`Knots::or_uniform`] (non-finite, not increasing, spacing, and
@@ -274,34 +282,37 @@ impl<P: Manifold> CubicSpline<P> {
         closed: bool,
     ) -> Result<Self, SplineError> {
         // On `P` itself; with the `compact` feature once on S^m for every point type
-        // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
+        // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sm`).
         #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, end, closed);
         #[cfg(feature = "compact")]
-        return Self::construct_on_sn(points, knots, end, closed);
+        return Self::construct_on_sm(points, knots, end, closed);
     }
 
     /// [`construct`](Self::construct) on the keys as points of S^m, the built curve converted
     /// back (the keys and the end condition are kept as given: the conversion copies
     /// coordinates).
     #[cfg(any(test, feature = "compact"))]
-    fn construct_on_sn(
+    fn construct_on_sm(
         points: Vec<P>,
         knots: Option<Vec<f64>>,
         end: CubicEnd<P::Vector>,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        let sn = points.iter().map(to_sn).collect();
+        let sm = points.iter().map(to_sm).collect();
         let vector = |v: &P::Vector| VecN::new(v.to_vec());
-        let end_sn = match &end {
+        let end_sm = match &end {
             CubicEnd::Natural => CubicEnd::Natural,
             CubicEnd::Scipy => CubicEnd::Scipy,
-            CubicEnd::Clamped { start, end } => CubicEnd::Clamped {
-                start: vector(start),
-                end: vector(end),
+            CubicEnd::Clamped {
+                start_velocity,
+                end_velocity,
+            } => CubicEnd::Clamped {
+                start_velocity: vector(start_velocity),
+                end_velocity: vector(end_velocity),
             },
         };
-        let c = CubicSpline::<SnPoint>::construct(sn, knots, end_sn, closed)?;
+        let c = CubicSpline::<SmPoint>::construct(sm, knots, end_sm, closed)?;
         let to = Recast::to(&points[0]);
         Ok(Self {
             points,
@@ -372,9 +383,12 @@ impl<P: Manifold> CubicSpline<P> {
             });
         }
         let clamps = match &end {
-            CubicEnd::Clamped { start, end } => Some((
-                check_velocity(&points[0], start, true)?,
-                check_velocity(&points[n - 1], end, false)?,
+            CubicEnd::Clamped {
+                start_velocity,
+                end_velocity,
+            } => Some((
+                check_velocity(&points[0], start_velocity, true)?,
+                check_velocity(&points[n - 1], end_velocity, false)?,
             )),
             _ => None,
         };

@@ -11,7 +11,7 @@ use crate::recast::keys;
 /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
 /// each `f64` in the shortest form that reads back to the same bits).
 #[test]
-fn the_construction_gives_the_same_bits_on_sn() {
+fn the_construction_gives_the_same_bits_on_sm() {
     fn check<P: Manifold>(points: &[P]) -> usize {
         let mut built = 0;
         let n = points.len();
@@ -29,12 +29,12 @@ fn the_construction_gives_the_same_bits_on_sn() {
             CubicEnd::Natural,
             CubicEnd::Scipy,
             CubicEnd::Clamped {
-                start: tangent(&points[0], 0.3),
-                end: tangent(&points[n - 1], -0.7),
+                start_velocity: tangent(&points[0], 0.3),
+                end_velocity: tangent(&points[n - 1], -0.7),
             },
             CubicEnd::Clamped {
-                start: points[0].to_vector(),
-                end: tangent(&points[n - 1], 0.2),
+                start_velocity: points[0].to_vector(),
+                end_velocity: tangent(&points[n - 1], 0.2),
             },
         ];
         for closed in [false, true] {
@@ -46,13 +46,13 @@ fn the_construction_gives_the_same_bits_on_sn() {
                 for end in &ends {
                     let native =
                         CubicSpline::construct(points.to_vec(), knots.clone(), end.clone(), closed);
-                    let on_sn = CubicSpline::construct_on_sn(
+                    let on_sm = CubicSpline::construct_on_sm(
                         points.to_vec(),
                         knots.clone(),
                         end.clone(),
                         closed,
                     );
-                    built += keys::same_bits(&native, &on_sn, &points);
+                    built += keys::same_bits(&native, &on_sm, &points);
                 }
             }
         }
