@@ -42,9 +42,13 @@ corpus:
     cargo run --quiet --locked -p spherekit-cli -- methods --json > target/registry.json
     python3 scripts/robustness_corpus.py --registry target/registry.json
 
-# Unit, integration, property and CLI tests, and doctests
+# Unit, integration, property and CLI tests, and doctests. `--all-features` includes the core's
+# `compact` (the browser build's constructions, once on S^m), so everything runs the shipped wasm
+# path natively; then the golden images again without it, the constructions of the CLI and Python
+# (`core-features` runs the core's own tests without it)
 unit:
     cargo test --workspace --all-features --locked
+    cargo test -p spherekit-cli --locked --test it golden::
 
 # The Python module: build it into .tools/pyvenv (the pins of python/test-requirements.txt from
 # PyPI) and run its pytest suite and the examples of docs/python.md

@@ -25,7 +25,7 @@ import tempfile
 
 OUT = "tests/robustness/degenerate"
 
-# Methods and the spaces they run on ("Sn" stands for S5 here).
+# Methods and the spaces they run on ("S<m>" stands for S5 here).
 ALL_SPACES = ["S2", "S3", "S5"]
 METHODS = {}      # id -> spaces
 TAKES_KNOTS = set()
@@ -329,9 +329,9 @@ def cases():
             ("start_negative_1e6", {"start": -1e6}),
         ]:
             yield f"corner_blend_{sp}_{label}", scene(space, "corner-blend", pts, params=params, samples=129)
-        for order in [1, 10]:
-            yield f"arc_blend_{sp}_order_{order}", scene(space, "arc-blend", pts, params={"order": order}, samples=129)
-            yield f"corner_blend_{sp}_order_{order}", scene(space, "corner-blend", pts, params={"order": order}, samples=129)
+        for n in [1, 10]:
+            yield f"arc_blend_{sp}_smoothness_{n}", scene(space, "arc-blend", pts, params={"smoothness": n}, samples=129)
+            yield f"corner_blend_{sp}_smoothness_{n}", scene(space, "corner-blend", pts, params={"smoothness": n}, samples=129)
     # Small-circle legs (S2 only): one bend for all edges, one per edge, next to ±1.
     pts = generic("S2", 6)
     for label, bend in [("0.9", 0.9), ("per_edge", [0.5, -0.5, 0.9, -0.9, 0.0]),
@@ -537,10 +537,13 @@ def bad_cases():
         ("samples_and_eval_at", "{" + S2 + ',"samples":5,"eval_at":[0]}', "eval_at: give either samples or eval_at"),
         ("eval_at_empty", "{" + S2 + ',"eval_at":[]}', "eval_at: must have 1 to 1000000 parameters, got 0"),
         # Method parameters.
-        ("order_zero", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":0}}', "params.order: must be a whole number from 1 to 10, got 0"),
-        ("order_eleven", '{"space":"S3","method":"corner-blend","points":[[1,0,0,0],[0,1,0,0],[0,0,1,0]],"params":{"order":11}}', "params.order: must be a whole number from 1 to 10, got 11"),
-        ("order_huge", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":1e12}}', "params.order: must be a whole number"),
-        ("order_negative", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":-1}}', "params.order: must be a whole number"),
+        ("smoothness_zero", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"smoothness":0}}', "params.smoothness: must be a whole number from 1 to 10, got 0"),
+        ("smoothness_eleven", '{"space":"S3","method":"corner-blend","points":[[1,0,0,0],[0,1,0,0],[0,0,1,0]],"params":{"smoothness":11}}', "params.smoothness: must be a whole number from 1 to 10, got 11"),
+        ("smoothness_huge", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"smoothness":1e12}}', "params.smoothness: must be a whole number"),
+        ("smoothness_negative", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"smoothness":-1}}', "params.smoothness: must be a whole number"),
+        # `order`, the earlier name of `smoothness`, is read as it (out of range here), but not beside it.
+        ("order_zero", '{"space":"S2","method":"arc-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":0}}', "params.smoothness: must be a whole number from 1 to 10, got 0"),
+        ("order_and_smoothness", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"order":2,"smoothness":2}}', "params.order: is the earlier name of params.smoothness: give one of them"),
         ("fraction_above_half", '{"space":"S2","method":"corner-blend","points":[[1,0,0],[0,1,0],[0,0,1]],"params":{"fraction":0.75}}', "params.fraction: must be in (0, 0.5]"),
         ("gamma_list_wrong_length", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1],[0.6,0.4,0.3,0.1]],"params":{"gamma":[1,2,3,4]}}', "params.gamma: must have one value per interior knot (1), got 4"),
         ("gamma_string", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"gamma":"1"}}', "params.gamma: must be a number or a list of numbers"),

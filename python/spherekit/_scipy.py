@@ -51,6 +51,15 @@ def _quats(rotations, who):
     return q, array
 
 
+def _renamed(name, value, old_name, old_value):
+    """The value of keyword ``name``, also accepted under its earlier name ``old_name``."""
+    if old_value is None:
+        return value
+    if value is not None:
+        raise ValueError(f"`{old_name}` is the earlier name of `{name}`: give one of them.")
+    return old_value
+
+
 def _as_given(rotations, q, array):
     """The keys to keep for pickling: a ``Rotation`` as it is (it pickles), an array copied (the
     caller may change theirs)."""
@@ -106,8 +115,8 @@ class RotationSpline:
 
     - ``end="scipy"`` (the default for open splines: the end rates are the end segments' mean
       rates), ``"natural"``
-      (zero angular acceleration at the ends) or ``"clamped"`` (the body-frame angular rates
-      ``start_rate`` and ``end_rate`` at the first and last key);
+      (zero angular acceleration at the ends) or ``"clamped"`` (the body-frame angular
+      velocities ``start_velocity`` and ``end_velocity`` at the first and last key);
     - ``closed=True``: a C2 loop through the keys; ``times`` then has one more entry than
       ``rotations``, the time at which the spline is back at the first key (no ends: ``end``
       must be left out or ``"natural"``). Its quaternions repeat with the period.
@@ -129,8 +138,21 @@ class RotationSpline:
     """
 
     def __init__(
-        self, times, rotations, *, end=None, closed=False, start_rate=None, end_rate=None, scalar_first=False
+        self,
+        times,
+        rotations,
+        *,
+        end=None,
+        closed=False,
+        start_velocity=None,
+        end_velocity=None,
+        scalar_first=False,
+        start_rate=None,
+        end_rate=None,
     ):
+        # `start_rate`/`end_rate`: the earlier names of `start_velocity`/`end_velocity`.
+        start_velocity = _renamed("start_velocity", start_velocity, "start_rate", start_rate)
+        end_velocity = _renamed("end_velocity", end_velocity, "end_rate", end_rate)
         q, array = _quats(rotations, "RotationSpline")
         if len(q) == 1:
             raise ValueError("`rotations` must contain at least 2 rotations.")
@@ -158,14 +180,14 @@ class RotationSpline:
             q,
             end=native_end,
             closed=closed,
-            start_rate=start_rate,
-            end_rate=end_rate,
+            start_velocity=start_velocity,
+            end_velocity=end_velocity,
             scalar_first=scalar_first and array,
         )
         self._args = (
             times.copy(),
             _as_given(rotations, q, array),
-            dict(end=end, closed=closed, start_rate=start_rate, end_rate=end_rate, scalar_first=scalar_first),
+            dict(end=end, closed=closed, start_velocity=start_velocity, end_velocity=end_velocity, scalar_first=scalar_first),
         )
         self._array_keys = array
         self._scalar_first = scalar_first

@@ -21,8 +21,8 @@ class RotationSpline:
         *,
         end: Optional[Literal["scipy", "natural", "clamped"]] = None,
         closed: bool = False,
-        start_rate: Optional[npt.ArrayLike] = None,
-        end_rate: Optional[npt.ArrayLike] = None,
+        start_velocity: Optional[npt.ArrayLike] = None,
+        end_velocity: Optional[npt.ArrayLike] = None,
         scalar_first: bool = False,
     ) -> None: ...
     @overload

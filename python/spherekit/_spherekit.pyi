@@ -57,8 +57,8 @@ class _CubicRotations:
         quats: npt.ArrayLike,
         end: Literal["scipy", "natural", "clamped"] = "scipy",
         closed: bool = False,
-        start_rate: Optional[npt.ArrayLike] = None,
-        end_rate: Optional[npt.ArrayLike] = None,
+        start_velocity: Optional[npt.ArrayLike] = None,
+        end_velocity: Optional[npt.ArrayLike] = None,
         scalar_first: bool = False,
     ) -> None: ...
     def __call__(self, t: _Times, order: Literal[0, 1, 2] = 0, scalar_first: bool = False) -> npt.NDArray[np.float64]: ...

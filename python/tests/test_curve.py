@@ -191,3 +191,21 @@ def test_batches_split_over_threads_agree_bit_for_bit(rng, monkeypatch):
         one = call()
         monkeypatch.setenv("SPHEREKIT_THREADS", "2")
         assert np.array_equal(one, call()) and not np.isnan(one).any()
+
+
+def test_smoothness_and_derivative_order_are_different_keywords():
+    """`smoothness=n` is the blends' Cⁿ order; `curve(t, order)` the derivative order, as scipy's.
+    The earlier spellings, `order=n` for the smoothness and a snake_case method id, still give
+    the same curve."""
+    pts = [[1, 0, 0.3], [0.6, 0.8, 0.4], [-0.2, 1, 0.1], [-0.9, 0.3, -0.2]]
+    for method in ["arc-blend", "corner-blend"]:
+        c = spherekit.Curve(method, pts, smoothness=3)
+        old = spherekit.Curve(method.replace("-", "_"), pts, order=3)
+        t = np.linspace(*c.domain, 401)
+        for derivative in (0, 1, 2):
+            assert (old(t, order=derivative) == c(t, order=derivative)).all(), (method, derivative)
+        assert (spherekit.Curve(method, pts)(t, 2) != c(t, 2)).any(), method
+        with pytest.raises(ValueError, match="earlier name of params.smoothness"):
+            spherekit.Curve(method, pts, order=3, smoothness=3)
+    names = {p["name"] for m in spherekit.methods() for p in m["params"]}
+    assert "smoothness" in names and "order" not in names

@@ -72,7 +72,7 @@ def splines(rng):
     return [
         (spherekit.RotationSpline(times, keys), times),
         (spherekit.RotationSpline(times, q[:, [3, 0, 1, 2]], scalar_first=True), times),
-        (spherekit.RotationSpline(times, q, end="clamped", start_rate=[0.1, 0.2, 0.3], end_rate=np.zeros(3)), times),
+        (spherekit.RotationSpline(times, q, end="clamped", start_velocity=[0.1, 0.2, 0.3], end_velocity=np.zeros(3)), times),
         (spherekit.RotationSpline(loop_times, Rotation.from_quat(q), closed=True), loop_times),
         (spherekit.Slerp(times, keys), times),
         (spherekit.Slerp(times, q[:, [3, 0, 1, 2]], scalar_first=True), times),

@@ -108,8 +108,13 @@ def test_rotation_spline_other_ends(rng):
     # Natural ends: zero angular acceleration at the first and last key.
     assert np.abs(natural([times[0], times[-1]], 2)).max() < 1e-9
     w0, w1 = np.array([0.1, -0.2, 0.3]), np.array([0.0, 0.5, 0.0])
-    clamped = spherekit.RotationSpline(times, keys, end="clamped", start_rate=w0, end_rate=w1)
+    clamped = spherekit.RotationSpline(times, keys, end="clamped", start_velocity=w0, end_velocity=w1)
     assert np.abs(clamped([times[0], times[-1]], 1) - [w0, w1]).max() < 1e-12
+    # The earlier keyword names are still accepted, for the same spline; not both spellings.
+    old = spherekit.RotationSpline(times, keys, end="clamped", start_rate=w0, end_rate=w1)
+    assert (old(times, 1) == clamped(times, 1)).all()
+    with pytest.raises(ValueError, match="earlier name of `start_velocity`"):
+        spherekit.RotationSpline(times, keys, end="clamped", start_velocity=w0, start_rate=w0, end_velocity=w1)
     loop_times = np.append(times, times[-1] + 1.0)
     loop = spherekit.RotationSpline(loop_times, keys, closed=True)
     # Closed: back at the first key, C2 across the seam, periodic outside.

@@ -103,7 +103,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
 
 fn methods() {
     for m in METHODS {
-        println!("{:<14} {:<14} {}", m.id, m.spheres.describe(), m.summary);
+        println!("{:<14} {:<14} {}", m.id, m.spaces.describe(), m.summary);
     }
     println!(
         "\nEvery method samples on the spheres listed; `render` draws S1, S2 and S3 scenes \

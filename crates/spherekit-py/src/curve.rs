@@ -7,7 +7,7 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use serde_json::{Map, Value, json};
-use spherekit::{Curve, Extrapolate, Jet, S2Point, SnPoint, UnitQuat};
+use spherekit::{Curve, Extrapolate, Jet, S2Point, SmPoint, UnitQuat};
 use spherekit_scene::{Built, BuiltCurve, Scene, ScenePoint, continuity_json};
 
 use crate::batch;
@@ -79,7 +79,7 @@ impl Flat for UnitQuat {
     }
 }
 
-impl Flat for SnPoint {
+impl Flat for SmPoint {
     fn write_point(&self, _: bool, row: &mut [f64]) {
         row.copy_from_slice(self.coords());
     }
@@ -180,7 +180,8 @@ pub(crate) fn write_jets<P: Flat>(
 /// - `parametrization="arclength"`: the same curve at unit speed over `[0, L]` (the rotation
 ///   angle on S3); `extrapolate`: `"hold"` (default), `"extend"`, `"cycle"` (closed),
 ///   `"error"` or `"segment"` (the open cubic), what the curve is outside `domain`.
-/// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`…).
+/// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`,
+///   `smoothness=3` for the Cⁿ blends…).
 ///
 /// `curve(t)` gives the points at the parameters `t` (a number or a 1-D array), `curve(t, 1)`
 /// and `curve(t, 2)` the first and second derivatives (ambient vectors). Outside `domain` the
@@ -233,7 +234,7 @@ macro_rules! with_built {
         match &$curve.built {
             BuiltCurve::S2($b) => $body,
             BuiltCurve::S3($b) => $body,
-            BuiltCurve::Sn($b) => $body,
+            BuiltCurve::Sm($b) => $body,
         }
     };
 }

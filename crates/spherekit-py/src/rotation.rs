@@ -137,12 +137,12 @@ fn into_period(t: f64, t0: f64, t1: f64) -> f64 {
 }
 
 /// A body-frame angular rate `[x, y, z]`.
-fn rate(v: Option<Vec<f64>>, name: &str) -> PyResult<Option<spherekit::glam::DVec3>> {
+fn angular_velocity(v: Option<Vec<f64>>, name: &str) -> PyResult<Option<spherekit::glam::DVec3>> {
     match v.as_deref() {
         None => Ok(None),
         Some(&[x, y, z]) => Ok(Some(spherekit::glam::DVec3::new(x, y, z))),
         Some(v) => Err(value_error(format!(
-            "`{name}` must be an angular rate [x, y, z], got {} numbers",
+            "`{name}` must be an angular velocity [x, y, z], got {} numbers",
             v.len()
         ))),
     }
@@ -286,7 +286,7 @@ impl PyCubicRotations {
 #[pymethods]
 impl PyCubicRotations {
     #[new]
-    #[pyo3(signature = (times, quats, end="scipy", closed=false, start_rate=None, end_rate=None, scalar_first=false))]
+    #[pyo3(signature = (times, quats, end="scipy", closed=false, start_velocity=None, end_velocity=None, scalar_first=false))]
     #[expect(clippy::too_many_arguments, reason = "the Python signature")]
     fn new(
         py: Python<'_>,
@@ -294,21 +294,25 @@ impl PyCubicRotations {
         quats: &Bound<'_, PyAny>,
         end: &str,
         closed: bool,
-        start_rate: Option<&Bound<'_, PyAny>>,
-        end_rate: Option<&Bound<'_, PyAny>>,
+        start_velocity: Option<&Bound<'_, PyAny>>,
+        end_velocity: Option<&Bound<'_, PyAny>>,
         scalar_first: bool,
     ) -> PyResult<Self> {
         let times = numbers(times, "times")?;
         let (keys, signs) = keys(quats, scalar_first)?;
-        let start_rate = rate(
-            start_rate.map(|r| numbers(r, "start_rate")).transpose()?,
-            "start_rate",
+        let start_velocity = angular_velocity(
+            start_velocity
+                .map(|r| numbers(r, "start_velocity"))
+                .transpose()?,
+            "start_velocity",
         )?;
-        let end_rate = rate(
-            end_rate.map(|r| numbers(r, "end_rate")).transpose()?,
-            "end_rate",
+        let end_velocity = angular_velocity(
+            end_velocity
+                .map(|r| numbers(r, "end_velocity"))
+                .transpose()?,
+            "end_velocity",
         )?;
-        let end = match (end, start_rate, end_rate) {
+        let end = match (end, start_velocity, end_velocity) {
             ("scipy", None, None) => CubicEnd::Scipy,
             ("natural", None, None) => CubicEnd::Natural,
             ("clamped", Some(a), Some(b)) => {
@@ -317,12 +321,12 @@ impl PyCubicRotations {
             }
             ("clamped", _, _) => {
                 return Err(value_error(
-                    "end=\"clamped\" needs start_rate and end_rate (body-frame angular rates [x, y, z])",
+                    "end=\"clamped\" needs start_velocity and end_velocity (body-frame angular velocities [x, y, z])",
                 ));
             }
             ("scipy" | "natural", _, _) => {
                 return Err(value_error(
-                    "start_rate and end_rate apply with end=\"clamped\" only",
+                    "start_velocity and end_velocity apply with end=\"clamped\" only",
                 ));
             }
             (other, _, _) => {

@@ -146,7 +146,7 @@ pub(crate) fn sphere_frame(size: u32) -> (f64, f64) {
 fn marker_positions(c: &BuiltCurve) -> Vec<Vec<DVec3>> {
     match c {
         BuiltCurve::S2(b) => b.inputs.iter().map(|p| vec![p.as_dvec3()]).collect(),
-        BuiltCurve::Sn(b) => b
+        BuiltCurve::Sm(b) => b
             .inputs
             .iter()
             .map(|p| vec![DVec3::new(p.coords()[0], p.coords()[1], 0.0)])
@@ -171,7 +171,7 @@ fn facing(curves: &[BuiltCurve]) -> Option<DVec3> {
                     count += 1.0;
                 }
             }
-            BuiltCurve::Sn(b) => {
+            BuiltCurve::Sm(b) => {
                 for p in &b.inputs {
                     sum += DVec3::new(p.coords()[0], p.coords()[1], 0.0);
                     count += 1.0;

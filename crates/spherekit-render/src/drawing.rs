@@ -190,7 +190,7 @@ fn space_of(curve: &BuiltCurve) -> Space {
     match curve {
         BuiltCurve::S2(_) => Space::S2,
         BuiltCurve::S3(_) => Space::S3,
-        BuiltCurve::Sn(b) => b.inputs.first().map_or_else(
+        BuiltCurve::Sm(b) => b.inputs.first().map_or_else(
             || b.curve.eval(b.curve.domain()[0]).space(),
             ScenePoint::space,
         ),

@@ -42,7 +42,7 @@ use core::fmt;
 
 use spherekit::glam::DVec3;
 use spherekit::{
-    Ambient, Curve, Jet, Manifold, S2Point, Side, SnPoint, UnitQuat, angular_velocity_acceleration,
+    Ambient, Curve, Jet, Manifold, S2Point, Side, SmPoint, UnitQuat, angular_velocity_acceleration,
     angular_velocity_acceleration_body,
 };
 use spherekit_scene::{Built, BuiltCurve, Plot, PlotTime, Scene, SceneError, Space, View};
@@ -332,8 +332,8 @@ impl Prepared {
                         [v.length(), v.x, v.y, v.z]
                     })
                 }
-                BuiltCurve::Sn(b) => {
-                    let embed = |p: &SnPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
+                BuiltCurve::Sm(b) => {
+                    let embed = |p: &SmPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
                     draw_points(&mut sketch, b, color, key, polygon, view, &embed);
                     sample(&*b.curve, size, normalized, &|j| {
                         [j.velocity.length(), 0.0, 0.0, 0.0]

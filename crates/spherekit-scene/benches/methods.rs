@@ -24,7 +24,7 @@ fn jets(curve: &BuiltCurve, ts: &[f64]) -> f64 {
     match curve {
         BuiltCurve::S2(b) => run(&*b.curve, ts),
         BuiltCurve::S3(b) => run(&*b.curve, ts),
-        BuiltCurve::Sn(b) => run(&*b.curve, ts),
+        BuiltCurve::Sm(b) => run(&*b.curve, ts),
     }
 }
 

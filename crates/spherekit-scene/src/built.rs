@@ -5,7 +5,7 @@
 
 use serde_json::{Map, Value, json};
 use spherekit::{
-    Ambient, Curve, Jet, JointContinuity, Manifold, PointError, S2Point, SnPoint, UnitQuat, VecN,
+    Ambient, Curve, Jet, JointContinuity, Manifold, PointError, S2Point, SmPoint, UnitQuat, VecN,
     angular_velocity_acceleration, angular_velocity_acceleration_body,
 };
 
@@ -256,65 +256,24 @@ pub enum BuiltCurve {
     /// A curve of orientations.
     S3(Built<UnitQuat>),
     /// A curve on S^m.
-    Sn(Built<SnPoint>),
+    Sm(Built<SmPoint>),
 }
 
 /// Builds the same expression on every sphere: `on_every_sphere!(points, |p| expr)` matches
 /// [`Points`](crate::scene::Points) and wraps `expr` (a [`Built`]) in the [`BuiltCurve`] of
-/// the same sphere, so a method's build function is written once for S², S³ and S^m. Natively
-/// `expr` is compiled for each sphere (`on_each_sphere!`); the wasm build compiles it once,
-/// for S^m (`on_s_m!`, `on_sn`); the unit tests have both, `on_sn::ROUTE` choosing
-/// (`on_sn::tests` compares them).
-#[cfg(not(any(test, target_arch = "wasm32")))]
+/// the same sphere, so a method's build function is written once for S², S³ and S^m. (The
+/// core's `compact` feature, which the browser build turns on, is what keeps one copy of the
+/// constructions that do the same arithmetic on every sphere.)
 macro_rules! on_every_sphere {
-    ($points:expr, |$p:ident| $body:expr) => {
-        $crate::built::on_each_sphere!($points, |$p| $body)
-    };
-}
-#[cfg(target_arch = "wasm32")]
-macro_rules! on_every_sphere {
-    ($points:expr, |$p:ident| $body:expr) => {
-        $crate::built::on_s_m!($points, |$p| $body)
-    };
-}
-#[cfg(all(test, not(target_arch = "wasm32")))]
-macro_rules! on_every_sphere {
-    ($points:expr, |$p:ident| $body:expr) => {
-        if $crate::built::on_sn::ROUTE.get() {
-            $crate::built::on_s_m!($points, |$p| $body)
-        } else {
-            $crate::built::on_each_sphere!($points, |$p| $body)
-        }
-    };
-}
-
-/// `on_every_sphere!` with `expr` compiled for each sphere.
-#[cfg(not(target_arch = "wasm32"))]
-macro_rules! on_each_sphere {
     ($points:expr, |$p:ident| $body:expr) => {
         match $points {
             $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
             $crate::scene::Points::S3($p) => $crate::built::BuiltCurve::S3($body),
-            $crate::scene::Points::Sn($p) => $crate::built::BuiltCurve::Sn($body),
+            $crate::scene::Points::Sm($p) => $crate::built::BuiltCurve::Sm($body),
         }
     };
 }
-#[cfg(not(target_arch = "wasm32"))]
-pub(crate) use on_each_sphere;
-
-/// `on_every_sphere!` with `expr` compiled once, on S^m, the curve of an S² or S³ scene
-/// wrapped back onto its sphere (`on_sn`).
-#[cfg(any(test, target_arch = "wasm32"))]
-macro_rules! on_s_m {
-    ($points:expr, |$p:ident| $body:expr) => {{
-        let ($p, back) = $crate::built::on_sn::to_sn($points);
-        let built: $crate::built::Built<spherekit::SnPoint> = $body;
-        back.wrap(built)
-    }};
-}
 pub(crate) use on_every_sphere;
-#[cfg(any(test, target_arch = "wasm32"))]
-pub(crate) use on_s_m;
 
 /// The fields [`BuiltCurve::sample_field`] gives, as [`Scene::sample_json`] names them.
 pub const SAMPLE_FIELDS: [&str; 9] = [
@@ -351,7 +310,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.sample_field(scene, field),
             Self::S3(b) => b.sample_field(scene, field),
-            Self::Sn(b) => b.sample_field(scene, field),
+            Self::Sm(b) => b.sample_field(scene, field),
         }
     }
 
@@ -364,7 +323,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.sample_into(scene, options, out),
             Self::S3(b) => b.sample_into(scene, options, out),
-            Self::Sn(b) => b.sample_into(scene, options, out),
+            Self::Sm(b) => b.sample_into(scene, options, out),
         }
     }
 
@@ -374,7 +333,7 @@ impl BuiltCurve {
         let info = match &mut self {
             Self::S2(b) => &mut b.info,
             Self::S3(b) => &mut b.info,
-            Self::Sn(b) => &mut b.info,
+            Self::Sm(b) => &mut b.info,
         };
         info.insert(key.into(), value);
         self
@@ -385,7 +344,7 @@ impl BuiltCurve {
         match &mut self {
             Self::S2(b) => b.order = order,
             Self::S3(b) => b.order = order,
-            Self::Sn(b) => b.order = order,
+            Self::Sm(b) => b.order = order,
         }
         self
     }
@@ -396,7 +355,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => (b.continuity(), b.order),
             Self::S3(b) => (b.continuity(), b.order),
-            Self::Sn(b) => (b.continuity(), b.order),
+            Self::Sm(b) => (b.continuity(), b.order),
         }
     }
 
@@ -406,7 +365,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.curve.domain(),
             Self::S3(b) => b.curve.domain(),
-            Self::Sn(b) => b.curve.domain(),
+            Self::Sm(b) => b.curve.domain(),
         }
     }
 }
@@ -491,12 +450,12 @@ impl ScenePoint for UnitQuat {
     }
 }
 
-impl ScenePoint for SnPoint {
+impl ScenePoint for SmPoint {
     fn from_coords(c: &[f64]) -> Result<Self, PointError> {
         Self::try_new(c.to_vec())
     }
     fn coords(&self) -> Vec<f64> {
-        SnPoint::coords(self).to_vec()
+        SmPoint::coords(self).to_vec()
     }
     fn vector_coords(v: &VecN) -> Vec<f64> {
         v.to_vec()
@@ -505,215 +464,9 @@ impl ScenePoint for SnPoint {
         Some(VecN::from(c.to_vec()))
     }
     fn space(&self) -> Space {
-        Space::Sn(self.coords().len().saturating_sub(1))
+        Space::Sm(self.coords().len().saturating_sub(1))
     }
     fn into_built_curve(built: Built<Self>) -> BuiltCurve {
-        BuiltCurve::Sn(built)
-    }
-}
-
-/// The every-sphere methods built and evaluated once, on S^m, in the wasm build.
-///
-/// Each method written with [`on_every_sphere!`] would otherwise be compiled three times into
-/// the .wasm (for [`S2Point`], [`UnitQuat`] and [`SnPoint`]), its construction and its
-/// evaluation. The browser build converts the keys of an S² or S³ scene to points of S^m with
-/// the same ambient coordinates, builds there, and wraps the curve ([`OnSn`]) so that the rest of
-/// the code still sees a curve on S² or S³. Every [`Manifold`] operation is a default method over
-/// [`spherekit::Ambient`], whose implementations do the same arithmetic coordinate by
-/// coordinate for `DVec3`, `DVec4` and [`VecN`], so the curve and its samples have the same bits
-/// as the native build's (`tests::curves_on_s_m_have_the_same_bits`, and the browser's renders
-/// are compared with the native ones byte for byte by the end-to-end tests). The cost is in
-/// evaluation: a point of S^m allocates its coordinates.
-#[cfg(any(test, target_arch = "wasm32"))]
-pub(crate) mod on_sn {
-    use spherekit::glam::{DVec3, DVec4};
-    use spherekit::{Ambient, Curve, Jet, Manifold, Side, SnPoint, VecN};
-
-    use super::{Built, BuiltCurve, ScenePoint};
-    use crate::scene::Points;
-
-    /// The sphere a curve built on S^m goes back to.
-    pub(crate) enum Back {
-        S2,
-        S3,
-        Sn,
-    }
-
-    /// A point of S^m with the ambient coordinates of `p`.
-    pub(crate) fn point<P: Manifold>(p: &P) -> SnPoint {
-        SnPoint::from_vector_unchecked(VecN::from(p.to_vector().as_slice().to_vec()))
-    }
-
-    /// The scene's points as points of S^m, and the sphere to go back to.
-    pub(crate) fn to_sn(points: Points) -> (Vec<SnPoint>, Back) {
-        match points {
-            Points::S2(p) => (p.iter().map(point).collect(), Back::S2),
-            Points::S3(p) => (p.iter().map(point).collect(), Back::S3),
-            Points::Sn(p) => (p, Back::Sn),
-        }
-    }
-
-    impl Back {
-        /// `built` on the sphere of the scene.
-        pub(crate) fn wrap(self, built: Built<SnPoint>) -> BuiltCurve {
-            match self {
-                Self::S2 => BuiltCurve::S2(recast(built, DVec3::ZERO)),
-                Self::S3 => BuiltCurve::S3(recast(built, DVec4::ZERO)),
-                Self::Sn => BuiltCurve::Sn(built),
-            }
-        }
-    }
-
-    /// `built` as a curve of the point type whose ambient vectors are like `like`.
-    pub(crate) fn recast<Q: ScenePoint>(built: Built<SnPoint>, like: Q::Vector) -> Built<Q> {
-        let to = OnSn::<Q> {
-            curve: built.curve,
-            like,
-        };
-        let points = |ps: Vec<SnPoint>| ps.iter().map(|p| to.point(p)).collect();
-        Built {
-            inputs: points(built.inputs),
-            controls: points(built.controls),
-            auxiliary: points(built.auxiliary),
-            info: built.info,
-            order: built.order,
-            curve: Box::new(to),
-        }
-    }
-
-    /// A curve on S^m seen as a curve of `Q` (S² or S³), its points and vectors converted
-    /// coordinate by coordinate (every method of [`Curve`] forwarded, so that none falls back
-    /// to a default the inner curve overrides).
-    #[derive(Debug)]
-    pub(crate) struct OnSn<Q: Manifold> {
-        curve: Box<dyn Curve<Point = SnPoint> + Send + Sync>,
-        like: Q::Vector,
-    }
-
-    impl<Q: Manifold> OnSn<Q> {
-        fn vector(&self, v: &VecN) -> Q::Vector {
-            self.like.with_coords(v.as_slice())
-        }
-
-        fn point(&self, p: &SnPoint) -> Q {
-            Q::from_vector_unchecked(self.like.with_coords(p.coords()))
-        }
-
-        fn jet(&self, j: &Jet<SnPoint>) -> Jet<Q> {
-            Jet {
-                point: self.point(&j.point),
-                velocity: self.vector(&j.velocity),
-                acceleration: self.vector(&j.acceleration),
-            }
-        }
-    }
-
-    impl<Q: Manifold> Curve for OnSn<Q> {
-        type Point = Q;
-
-        fn domain(&self) -> [f64; 2] {
-            self.curve.domain()
-        }
-
-        fn joints(&self) -> &[f64] {
-            self.curve.joints()
-        }
-
-        fn is_closed(&self) -> bool {
-            self.curve.is_closed()
-        }
-
-        fn is_antiperiodic(&self) -> bool {
-            self.curve.is_antiperiodic()
-        }
-
-        fn jet_at(&self, t: f64, side: Side) -> Jet<Q> {
-            self.jet(&self.curve.jet_at(t, side))
-        }
-
-        fn jet(&self, t: f64) -> Jet<Q> {
-            self.jet(&self.curve.jet(t))
-        }
-
-        fn eval(&self, t: f64) -> Q {
-            self.point(&self.curve.eval(t))
-        }
-
-        fn jet_beyond(&self, t: f64) -> Option<Jet<Q>> {
-            self.curve.jet_beyond(t).map(|j| self.jet(&j))
-        }
-
-        fn eval_many(&self, ts: &[f64], out: &mut [Q]) {
-            let mut ps = vec![self.curve.eval(self.curve.domain()[0]); out.len()];
-            self.curve.eval_many(ts, &mut ps);
-            for (o, p) in out.iter_mut().zip(&ps) {
-                *o = self.point(p);
-            }
-        }
-
-        fn jet_many(&self, ts: &[f64], out: &mut [Jet<Q>]) {
-            let mut js = vec![self.curve.jet(self.curve.domain()[0]); out.len()];
-            self.curve.jet_many(ts, &mut js);
-            for (o, j) in out.iter_mut().zip(&js) {
-                *o = self.jet(j);
-            }
-        }
-    }
-
-    #[cfg(test)]
-    std::thread_local! {
-        /// Whether the unit tests' `on_every_sphere!` builds on S^m, as the wasm build does.
-        pub(crate) static ROUTE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-    }
-
-    #[cfg(test)]
-    mod tests {
-        use std::path::Path;
-
-        use crate::scene::{SampleOptions, Scene};
-
-        use super::ROUTE;
-
-        /// Every golden scene (every method, S² and S³, open and closed, with parameters) and
-        /// every scene of the degenerate-input corpus (near and exactly coincident keys, near
-        /// half turns, parameters at and outside the domain under every extrapolation policy),
-        /// sampled with derivatives and the continuity report: the same JSON (`f64`s printed in
-        /// the shortest form that reads back to the same bits), or the same error, built
-        /// natively and on S^m.
-        #[test]
-        fn curves_on_s_m_have_the_same_bits() {
-            let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests");
-            let mut compared = 0;
-            let dirs = [root.join("golden"), root.join("robustness/degenerate")];
-            let paths = dirs
-                .iter()
-                .flat_map(|d| std::fs::read_dir(d).expect("scenes"));
-            for entry in paths {
-                let path = entry.expect("entry").path();
-                if path.extension().is_none_or(|e| e != "json") {
-                    continue;
-                }
-                let text = std::fs::read_to_string(&path).expect("scene");
-                let Ok(scene) = Scene::from_json(&text) else {
-                    continue;
-                };
-                let options = SampleOptions {
-                    deriv: true,
-                    continuity: true,
-                    body_frame: false,
-                };
-                let sample = |on_sn: bool| {
-                    ROUTE.set(on_sn);
-                    let curves = scene.build();
-                    ROUTE.set(false);
-                    curves
-                        .map(|c| scene.sample_json_with(&c, options).to_string())
-                        .map_err(|e| e.to_string())
-                };
-                assert_eq!(sample(false), sample(true), "{}", path.display());
-                compared += 1;
-            }
-            assert!(compared >= 400, "{compared} scenes");
-        }
+        BuiltCurve::Sm(built)
     }
 }

@@ -252,12 +252,23 @@ impl Document {
     ///
     /// The CLI's message for a bad parameter.
     pub fn set_param(&mut self, curve: usize, name: &str, value: Value) -> Result<(), EditError> {
+        // The parameter's other spelling (its earlier name, or its name) goes.
+        let other = self.scene.curves.get(curve).and_then(|c| {
+            c.method.params.iter().find_map(|p| match p.formerly {
+                Some(old) if p.name == name => Some(old),
+                Some(old) if old == name => Some(p.name),
+                _ => None,
+            })
+        });
         let mut doc = self.doc.clone();
         let c = curve_doc_mut(&mut doc, curve)?;
         let params = c
             .entry("params")
             .or_insert_with(|| Value::Object(Map::new()));
         if let Value::Object(p) = params {
+            if let Some(other) = other {
+                p.remove(other);
+            }
             if value.is_null() {
                 p.remove(name);
             } else {
@@ -321,7 +332,11 @@ impl Document {
             c.remove("knots");
         }
         if let Some(Value::Object(p)) = c.get_mut("params") {
-            p.retain(|k, _| new.params.iter().any(|q| q.name == k));
+            p.retain(|k, _| {
+                new.params
+                    .iter()
+                    .any(|q| q.name == k || q.formerly == Some(k.as_str()))
+            });
             if p.is_empty() {
                 c.remove("params");
             }

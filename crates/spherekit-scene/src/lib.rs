@@ -74,7 +74,7 @@ pub use built::{
 pub use edit::{Document, EditError};
 pub use error::{SceneError, one_line};
 pub use params::{Param, ParamKind, PerJoint};
-pub use registry::{KnotRule, METHODS, MIN_CLOSED_POINTS, Method, Spheres, registry_json};
+pub use registry::{KnotRule, METHODS, MIN_CLOSED_POINTS, Method, Spaces, registry_json};
 pub use scene::{
     CurveSpec, DEFAULT_SAMPLES, MAX_LABEL_CHARS, MAX_SAMPLES, SampleOptions, Sampling, Scene,
 };

@@ -7,7 +7,7 @@
 use serde_json::{Map, Value, json};
 
 use crate::error::{SceneError, field_error};
-use crate::registry::{Method, Spheres};
+use crate::registry::{Method, Spaces};
 
 /// One parameter of a method, as the registry describes it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -22,8 +22,8 @@ pub struct Param {
     pub kind: ParamKind,
     /// Whether a list with one value per joint is accepted in place of one number.
     pub per_joint: Option<PerJoint>,
-    /// The spheres it applies to.
-    pub spheres: Spheres,
+    /// The spaces it applies to.
+    pub spaces: Spaces,
     /// A solver setting rather than a shape parameter: the page gives it no control of its own.
     pub advanced: bool,
     /// The setting it belongs to: `(parameter, value)` when it applies (and is needed) only
@@ -32,6 +32,9 @@ pub struct Param {
     pub requires: Option<(&'static str, &'static str)>,
     /// Whether it is about the curve's ends, so that a closed loop has no use for it.
     pub open_only: bool,
+    /// An earlier name of the key, still read from scenes (and Python keywords) but not listed
+    /// in the registry JSON: `params` may give one of the two.
+    pub formerly: Option<&'static str>,
 }
 
 /// The type of a parameter, its default and its range.
@@ -106,10 +109,11 @@ impl Param {
             summary,
             kind,
             per_joint: None,
-            spheres: Spheres::All,
+            spaces: Spaces::All,
             advanced: false,
             requires: None,
             open_only: false,
+            formerly: None,
         }
     }
 
@@ -180,13 +184,19 @@ impl Param {
 
     /// Applies on S³ only.
     pub(crate) const fn s3_only(mut self) -> Self {
-        self.spheres = Spheres::S3;
+        self.spaces = Spaces::S3;
         self
     }
 
     /// Applies on S² only.
     pub(crate) const fn s2_only(mut self) -> Self {
-        self.spheres = Spheres::S2;
+        self.spaces = Spaces::S2;
+        self
+    }
+
+    /// Also read under its earlier name `name`.
+    pub(crate) const fn formerly(mut self, name: &'static str) -> Self {
+        self.formerly = Some(name);
         self
     }
 
@@ -232,7 +242,7 @@ impl Param {
             "label": self.label,
             "summary": self.summary,
             "type": kind,
-            "spaces": self.spheres.names(),
+            "spaces": self.spaces.names(),
             "advanced": self.advanced,
             "open_only": self.open_only,
         });
@@ -255,6 +265,31 @@ impl Param {
         }
         out
     }
+}
+
+/// `params` with every key given by its earlier name ([`Param::formerly`]) under its name.
+///
+/// # Errors
+///
+/// A [`SceneError::Field`] on `params.<earlier name>` when both names are given.
+pub(crate) fn current_names(
+    method: &Method,
+    mut params: Map<String, Value>,
+) -> Result<Map<String, Value>, SceneError> {
+    for p in method.params {
+        let Some(old) = p.formerly else { continue };
+        let Some(value) = params.remove(old) else {
+            continue;
+        };
+        if params.contains_key(p.name) {
+            return Err(field_error(
+                format!("params.{old}"),
+                format!("is the earlier name of params.{}: give one of them", p.name),
+            ));
+        }
+        params.insert(p.name.into(), value);
+    }
+    Ok(params)
 }
 
 /// A parameter given as one number for every point or joint, or as a list.

@@ -51,8 +51,8 @@ pub struct Method {
     pub continuity: &'static str,
     /// The publication it follows.
     pub source: &'static str,
-    /// The spheres it works on.
-    pub spheres: Spheres,
+    /// The spaces it works on (the registry JSON's `spaces`).
+    pub spaces: Spaces,
     /// Whether and how it takes `knots`.
     pub knots: KnotRule,
     /// The fewest points it accepts.
@@ -87,9 +87,9 @@ impl PartialEq for Method {
     }
 }
 
-/// Which spheres a method (or a parameter) works on.
+/// Which spaces (the scene's `space`: S², S³, S^m) a method or a parameter works on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Spheres {
+pub enum Spaces {
     /// S², S³ and every S^m.
     All,
     /// S³ only.
@@ -98,7 +98,7 @@ pub enum Spheres {
     S2,
 }
 
-impl Spheres {
+impl Spaces {
     /// The spheres by name, as the registry JSON lists them (`"S<m>"`: every other S^m).
     #[must_use]
     pub fn names(self) -> &'static [&'static str] {
@@ -167,13 +167,22 @@ impl KnotRule {
 }
 
 impl Method {
-    /// Finds a method by its scene id.
+    /// Finds a method by its scene id. Ids are kebab-case (`"arc-blend"`); the id with
+    /// underscores for hyphens (`"arc_blend"`, as the golden files and the modules are named)
+    /// is accepted too.
     ///
     /// # Errors
     ///
     /// A [`SceneError::Field`] on `method` listing the known ids.
     pub fn find(id: &str) -> Result<&'static Self, SceneError> {
-        METHODS.iter().copied().find(|m| m.id == id).ok_or_else(|| {
+        let same = |m: &&Self| {
+            m.id.len() == id.len()
+                && m.id
+                    .bytes()
+                    .zip(id.bytes())
+                    .all(|(a, b)| a == b || (a, b) == (b'-', b'_'))
+        };
+        METHODS.iter().copied().find(same).ok_or_else(|| {
             let ids: Vec<_> = METHODS.iter().map(|m| m.id).collect();
             field_error(
                 "method",
@@ -197,7 +206,7 @@ impl Method {
             "summary": self.summary,
             "continuity": self.continuity,
             "source": self.source,
-            "spaces": self.spheres.names(),
+            "spaces": self.spaces.names(),
             "knots": match self.knots {
                 KnotRule::PerPoint { skip } => json!({ "skip": skip }),
                 KnotRule::Computed => json!("computed"),

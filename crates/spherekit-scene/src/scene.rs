@@ -5,12 +5,12 @@
 
 use serde::Deserialize;
 use serde_json::{Map, Value, json};
-use spherekit::{DomainError, Extrapolate, S2Point, SnPoint, SplineError, UnitQuat, unflip};
+use spherekit::{DomainError, Extrapolate, S2Point, SmPoint, SplineError, UnitQuat, unflip};
 
 use crate::built::{BuiltCurve, ScenePoint};
 use crate::error::{SceneError, field_error, in_curve};
 use crate::json::json_error;
-use crate::params::Params;
+use crate::params::{Params, current_names};
 use crate::registry::{KnotRule, Method};
 use crate::rotation_loop;
 use crate::space::Space;
@@ -208,13 +208,13 @@ fn parse_label(label: Option<String>) -> Result<Option<String>, SceneError> {
 impl CurveSpec {
     fn validate(space: Space, raw: RawCurve) -> Result<Self, SceneError> {
         let method = Method::find(&raw.method)?;
-        if !method.spheres.contains(space) {
+        if !method.spaces.contains(space) {
             return Err(field_error(
                 "method",
                 format!(
                     "\"{}\" works on {}, not {}",
                     method.id,
-                    method.spheres.describe(),
+                    method.spaces.describe(),
                     space.name()
                 ),
             ));
@@ -274,7 +274,7 @@ impl CurveSpec {
             method,
             points: raw.points,
             knots: raw.knots,
-            params: raw.params.unwrap_or_default(),
+            params: current_names(method, raw.params.unwrap_or_default())?,
             canonicalize: raw.canonicalize.unwrap_or(true),
             closed,
             parametrization,
@@ -311,7 +311,7 @@ impl CurveSpec {
                 }
                 Points::S3(keys)
             }
-            Space::Sn(_) => Points::Sn(points(&self.points)?),
+            Space::Sm(_) => Points::Sm(points(&self.points)?),
         };
         let s3 = space == Space::S3;
         let canonicalized = self.canonicalize;
@@ -340,7 +340,7 @@ impl CurveSpec {
 pub(crate) enum Points {
     S2(Vec<S2Point>),
     S3(Vec<UnitQuat>),
-    Sn(Vec<SnPoint>),
+    Sm(Vec<SmPoint>),
 }
 
 /// What a method's build function gets: the points on their sphere, the knots and the

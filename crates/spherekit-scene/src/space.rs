@@ -16,7 +16,7 @@ pub enum Space {
     /// Orientations, unit quaternions `[w, x, y, z]`.
     S3,
     /// S^m for any other m ≥ 1, points of m + 1 coordinates.
-    Sn(usize),
+    Sm(usize),
 }
 
 impl Space {
@@ -42,7 +42,7 @@ impl Space {
         match m {
             2 => Ok(Self::S2),
             3 => Ok(Self::S3),
-            1..=MAX_DIMENSION => Ok(Self::Sn(m)),
+            1..=MAX_DIMENSION => Ok(Self::Sm(m)),
             _ => Err(bad()),
         }
     }
@@ -53,7 +53,7 @@ impl Space {
         match self {
             Self::S2 => 3,
             Self::S3 => 4,
-            Self::Sn(m) => m + 1,
+            Self::Sm(m) => m + 1,
         }
     }
 
@@ -63,13 +63,13 @@ impl Space {
         match self {
             Self::S2 => "S2".into(),
             Self::S3 => "S3".into(),
-            Self::Sn(m) => format!("S{m}"),
+            Self::Sm(m) => format!("S{m}"),
         }
     }
 
     /// Whether the renderer can draw scenes on this sphere (S¹, S² and S³).
     #[must_use]
     pub fn drawable(self) -> bool {
-        !matches!(self, Self::Sn(m) if m != 1)
+        !matches!(self, Self::Sm(m) if m != 1)
     }
 }

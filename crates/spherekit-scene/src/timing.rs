@@ -164,7 +164,7 @@ impl BuiltCurve {
         Ok(match self {
             Self::S2(b) => Self::S2(b.retime(parametrization, policy)?),
             Self::S3(b) => Self::S3(b.retime(parametrization, policy)?),
-            Self::Sn(b) => Self::Sn(b.retime(parametrization, policy)?),
+            Self::Sm(b) => Self::Sm(b.retime(parametrization, policy)?),
         })
     }
 
@@ -173,7 +173,7 @@ impl BuiltCurve {
         match self {
             Self::S2(b) => b.check(policy, t),
             Self::S3(b) => b.check(policy, t),
-            Self::Sn(b) => b.check(policy, t),
+            Self::Sm(b) => b.check(policy, t),
         }
     }
 }

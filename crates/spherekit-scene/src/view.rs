@@ -380,7 +380,7 @@ mod tests {
                 Space::S2,
                 "view.plot_time: must be",
             ),
-            (r#"{"plot": "omega"}"#, Space::Sn(1), "view.plot: \"omega\""),
+            (r#"{"plot": "omega"}"#, Space::Sm(1), "view.plot: \"omega\""),
             (
                 r#"{"plot": "phase"}"#,
                 Space::S2,

@@ -38,7 +38,7 @@ fn per_call(curve: &BuiltCurve) -> usize {
     match curve {
         BuiltCurve::S2(b) => allocations(&*b.curve),
         BuiltCurve::S3(b) => allocations(&*b.curve),
-        BuiltCurve::Sn(_) => 0,
+        BuiltCurve::Sm(_) => 0,
     }
 }
 

@@ -777,7 +777,7 @@ impl Playground {
         let (c, t) = self.at(curve, time)?;
         Ok(match c {
             BuiltCurve::S2(b) => b.curve.eval(t).as_dvec3().to_array().to_vec(),
-            BuiltCurve::Sn(b) => b.curve.eval(t).coords().to_vec(),
+            BuiltCurve::Sm(b) => b.curve.eval(t).coords().to_vec(),
             BuiltCurve::S3(b) => {
                 let q = b.curve.eval(t);
                 let mut out = q.to_wxyz().to_vec();
@@ -812,7 +812,7 @@ impl Playground {
                 let j = b.curve.jet(t);
                 json!({ "t": t, "point": j.point.as_dvec3().to_array(), "speed": j.velocity.length() })
             }
-            BuiltCurve::Sn(b) => {
+            BuiltCurve::Sm(b) => {
                 let j = b.curve.jet(t);
                 json!({ "t": t, "point": j.point.coords(), "speed": j.velocity.length() })
             }
@@ -1010,7 +1010,7 @@ impl Playground {
     /// Sphere coordinates of a point of ℝ³ in the scene's space (S¹ drops z).
     fn sphere_coords(&self, p: DVec3) -> Vec<f64> {
         match self.doc.scene().space {
-            Space::Sn(1) => vec![p.x, p.y],
+            Space::Sm(1) => vec![p.x, p.y],
             _ => p.to_array().to_vec(),
         }
     }

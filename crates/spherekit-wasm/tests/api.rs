@@ -441,7 +441,7 @@ fn the_text_floor_changes_the_layout_only_when_it_is_above_the_figures_text() {
 
 /// A scene of `method` on the first sphere it takes, with extra curve fields.
 fn timing_scene(m: &spherekit_scene::Method, extra: &str) -> String {
-    let s3 = m.spheres == spherekit_scene::Spheres::S3;
+    let s3 = m.spaces == spherekit_scene::Spaces::S3;
     // A loop goes around (a closed spline through an open path's points may not exist).
     let points = match (s3, extra.contains(r#""closed":true"#)) {
         (true, false) => {

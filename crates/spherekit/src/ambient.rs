@@ -120,7 +120,7 @@ impl Ambient for DVec4 {
     }
 }
 
-/// A vector of ℝⁿ whose dimension is chosen at run time: the ambient space of [`SnPoint`](crate::SnPoint).
+/// A vector of ℝⁿ whose dimension is chosen at run time: the ambient space of [`SmPoint`](crate::SmPoint).
 ///
 /// Vectors of different lengths combine as if the shorter one were padded with zeros (ℝᵐ ⊂ ℝⁿ
 /// as the first m coordinates): a sum or difference has the longer length, and the dot product

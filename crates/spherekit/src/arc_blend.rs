@@ -76,22 +76,22 @@ use crate::error::SplineError;
 use crate::flow::{PlaneRotation, Segment, Weights};
 use crate::knots::Knots;
 use crate::manifold::{Manifold, renormalize};
-#[cfg(any(test, target_arch = "wasm32"))]
-use crate::recast::{Recast, to_sn};
+#[cfg(any(test, feature = "compact"))]
+use crate::recast::{Recast, to_sm};
 use crate::smoothing::SmoothingPolynomials;
 
 /// The largest continuity order accepted by the spline constructors.
-pub const MAX_BLEND_ORDER: usize = 10;
+pub const MAX_SMOOTHNESS: usize = 10;
 
-/// Checks `1 ≤ order ≤ MAX_BLEND_ORDER`.
-pub(crate) fn check_order(order: usize) -> Result<SmoothingPolynomials, SplineError> {
-    if order == 0 || order > MAX_BLEND_ORDER {
+/// Checks `1 ≤ smoothness ≤ MAX_SMOOTHNESS`.
+pub(crate) fn check_smoothness(smoothness: usize) -> Result<SmoothingPolynomials, SplineError> {
+    if smoothness == 0 || smoothness > MAX_SMOOTHNESS {
         return Err(SplineError::InvalidParameter {
-            name: "order",
-            reason: format!("must be an integer from 1 to {MAX_BLEND_ORDER}, got {order}"),
+            name: "smoothness",
+            reason: format!("must be an integer from 1 to {MAX_SMOOTHNESS}, got {smoothness}"),
         });
     }
-    SmoothingPolynomials::try_new(order)
+    SmoothingPolynomials::try_new(smoothness)
 }
 
 /// Checks the point count and that consecutive points are neither coincident nor antipodal.
@@ -381,7 +381,7 @@ fn timing_knots(timing: &'static str, widths: &[f64]) -> Result<Knots, SplineErr
 /// plane, so that circle `i−1`'s group acts in its own frame; the literal reading of the book's
 /// Procedure 9.4, which applies circle `i−1`'s rotation in circle `i`'s frame, is only C⁰. Keys
 /// are used as given (no sign flips): the spline interpolates these points of S³. The same
-/// construction works on S^m ([`SnPoint`](crate::SnPoint)).
+/// construction works on S^m ([`SmPoint`](crate::SmPoint)).
 ///
 /// Readings of the book followed here: the forward circle carries `w₁`; the triple of axis `j`
 /// is `(p_j, p_{j+1}, p_{j+2})`; knots by Algorithm 8.1 (the §7.10 recurrence is shifted by one
@@ -432,25 +432,25 @@ enum Resolved {
 }
 
 impl<P: Manifold> ArcBlend<P> {
-    /// The default continuity order (C²).
-    pub const DEFAULT_ORDER: usize = 2;
+    /// The default smoothness (C²).
+    pub const DEFAULT_SMOOTHNESS: usize = 2;
 
-    /// Builds the Cⁿ spline (`n = order`) through `points` with the [`ArcBlendTiming::Auto`]
+    /// Builds the Cⁿ spline (`n = smoothness`) through `points` with the [`ArcBlendTiming::Auto`]
     /// timing: the book's knots, starting at 0, while they are well-conditioned, otherwise
     /// arc-length (or uniform) knots with the same curve.
     ///
     /// # Errors
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 3 points;
-    /// - [`SplineError::InvalidParameter`] (`order`) unless `1 ≤ order ≤ 10`;
+    /// - [`SplineError::InvalidParameter`] (`smoothness`) unless `1 ≤ smoothness ≤ 10`;
     /// - [`SplineError::Coincident`] for equal consecutive points;
     /// - [`SplineError::Antipodal`] for antipodal consecutive points;
     /// - [`SplineError::NoCircle`] when `p_j = p_{j+2}` (no unique circle through the triple).
-    pub fn try_new(points: Vec<P>, order: usize) -> Result<Self, SplineError> {
-        Self::try_with(points, order, ArcBlendTiming::Auto)
+    pub fn try_new(points: Vec<P>, smoothness: usize) -> Result<Self, SplineError> {
+        Self::try_with(points, smoothness, ArcBlendTiming::Auto)
     }
 
-    /// Builds the Cⁿ spline (`n = order`) through `points` with the given timing.
+    /// Builds the Cⁿ spline (`n = smoothness`) through `points` with the given timing.
     ///
     /// # Errors
     ///
@@ -475,11 +475,11 @@ impl<P: Manifold> ArcBlend<P> {
     /// ```
     pub fn try_with(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         timing: ArcBlendTiming,
     ) -> Result<Self, SplineError> {
         check_neighbours(&points, 3)?;
-        Self::build(points, order, timing, false)
+        Self::build(points, smoothness, timing, false)
     }
 
     /// Builds the closed Cⁿ loop through `points` (`p₀ … p_{m−1}`, m ≥ 3) with the
@@ -488,8 +488,8 @@ impl<P: Manifold> ArcBlend<P> {
     /// # Errors
     ///
     /// As [`try_with_closed`](Self::try_with_closed).
-    pub fn try_new_closed(points: Vec<P>, order: usize) -> Result<Self, SplineError> {
-        Self::try_with_closed(points, order, ArcBlendTiming::Auto)
+    pub fn try_new_closed(points: Vec<P>, smoothness: usize) -> Result<Self, SplineError> {
+        Self::try_with_closed(points, smoothness, ArcBlendTiming::Auto)
     }
 
     /// Builds the closed Cⁿ loop `p₀ → p₁ → … → p_{m−1} → p₀` (m ≥ 3) with the given timing.
@@ -505,7 +505,7 @@ impl<P: Manifold> ArcBlend<P> {
     /// # Errors
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 3 points;
-    /// - [`SplineError::InvalidParameter`] (`order`) unless `1 ≤ order ≤ 10`;
+    /// - [`SplineError::InvalidParameter`] (`smoothness`) unless `1 ≤ smoothness ≤ 10`;
     /// - [`SplineError::Coincident`] / [`SplineError::Antipodal`] for coincident or antipodal
     ///   consecutive points, [`SplineError::CoincidentClosing`] /
     ///   [`SplineError::AntipodalClosing`] for the last and the first;
@@ -531,40 +531,40 @@ impl<P: Manifold> ArcBlend<P> {
     /// ```
     pub fn try_with_closed(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         timing: ArcBlendTiming,
     ) -> Result<Self, SplineError> {
         check_loop_neighbours(&points, 3)?;
-        Self::build(points, order, timing, true)
+        Self::build(points, smoothness, timing, true)
     }
 
     /// The construction of [`try_with`](Self::try_with) and
-    /// [`try_with_closed`](Self::try_with_closed), on checked points: natively on `P`
-    /// itself, in the wasm build once on S^m for every point type ([`crate::recast`]; the same
-    /// bits, `tests::the_construction_gives_the_same_bits_on_sn`).
+    /// [`try_with_closed`](Self::try_with_closed), on checked points: on `P` itself, or with
+    /// the `compact` feature once on S^m for every point type ([`crate::recast`]; the same
+    /// bits, `tests::the_construction_gives_the_same_bits_on_sm`).
     fn build(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         timing: ArcBlendTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        #[cfg(not(target_arch = "wasm32"))]
-        return Self::construct(points, order, timing, closed);
-        #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, order, timing, closed);
+        #[cfg(not(feature = "compact"))]
+        return Self::construct(points, smoothness, timing, closed);
+        #[cfg(feature = "compact")]
+        return Self::construct_on_sm(points, smoothness, timing, closed);
     }
 
     /// [`construct`](Self::construct) on the keys as points of S^m, the result converted back.
-    #[cfg(any(test, target_arch = "wasm32"))]
-    fn construct_on_sn(
+    #[cfg(any(test, feature = "compact"))]
+    fn construct_on_sm(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         timing: ArcBlendTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let to = Recast::to(&points[0]);
-        let sn = points.iter().map(to_sn).collect();
-        let c = ArcBlend::construct(sn, order, timing, closed)?;
+        let sm = points.iter().map(to_sm).collect();
+        let c = ArcBlend::construct(sm, smoothness, timing, closed)?;
         Ok(Self {
             points: to.points(&c.points),
             knots: c.knots,
@@ -580,11 +580,11 @@ impl<P: Manifold> ArcBlend<P> {
     /// The construction of [`build`](Self::build) on `P`.
     fn construct(
         mut points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         timing: ArcBlendTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        let poly = check_order(order)?;
+        let poly = check_smoothness(smoothness)?;
         let m = points.len();
         let triples = if closed { m } else { m - 2 };
         let circles = (0..triples)
@@ -737,9 +737,9 @@ impl<P: Manifold> ArcBlend<P> {
         }
     }
 
-    /// The continuity order `n`.
+    /// The smoothness `n`: the curve is Cⁿ at its joints.
     #[must_use]
-    pub fn order(&self) -> usize {
+    pub fn smoothness(&self) -> usize {
         self.poly.order()
     }
 
@@ -911,11 +911,11 @@ mod tests {
     use super::*;
     use crate::recast::keys;
 
-    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// The `compact` build constructs on S^m and converts back; every field (and every error) must
     /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
     /// each `f64` in the shortest form that reads back to the same bits).
     #[test]
-    fn the_construction_gives_the_same_bits_on_sn() {
+    fn the_construction_gives_the_same_bits_on_sm() {
         fn check<P: Manifold>(points: &[P]) -> usize {
             let mut built = 0;
             for closed in [false, true] {
@@ -939,9 +939,9 @@ mod tests {
                     ] {
                         let native =
                             ArcBlend::construct(points.to_vec(), order, timing.clone(), closed);
-                        let on_sn =
-                            ArcBlend::construct_on_sn(points.to_vec(), order, timing, closed);
-                        built += keys::same_bits(&native, &on_sn, &points);
+                        let on_sm =
+                            ArcBlend::construct_on_sm(points.to_vec(), order, timing, closed);
+                        built += keys::same_bits(&native, &on_sm, &points);
                     }
                 }
             }
@@ -953,7 +953,7 @@ mod tests {
 
     #[test]
     fn warp_end_conditions_and_monotonicity() {
-        for n in 1..=MAX_BLEND_ORDER {
+        for n in 1..=MAX_SMOOTHNESS {
             let poly = SmoothingPolynomials::try_new(n).unwrap_or_else(|e| panic!("{e}"));
             for (a, b) in [
                 (1.0, 1.0),

@@ -23,9 +23,9 @@
 //! dimension `r ≤ m + 1`): every slerp keeps its result in the span of its inputs, and a
 //! reflection through that span maps the problem to itself, so the solution lies in it and
 //! no coordinates beyond it are needed. The coordinate vectors are `DVec3` for `r ≤ 3`,
-//! `DVec4` for `r = 4` and [`VecN`] beyond, so S² and S³ run without allocation (natively; the
-//! wasm build runs all in `VecN`, padded to 3 or 4 coordinates: the same bits, one copy of the
-//! kernel in the .wasm).
+//! `DVec4` for `r = 4` and [`VecN`] beyond, so S² and S³ run without allocation (without the
+//! `compact` feature; with it, as in the browser build, all run in `VecN`, padded to 3 or 4
+//! coordinates: the same bits, one copy of the kernel in the binary).
 
 use glam::{DVec3, DVec4};
 

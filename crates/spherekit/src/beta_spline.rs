@@ -4,7 +4,7 @@
 //! The cubic spherical Beta spline on S^m with bias β₁ and tension β₂, and its interpolation
 //! solvers (Yang, Wang, Chen, Sun & He 2021; see `docs/references.md`).
 
-#[cfg(any(test, not(target_arch = "wasm32")))]
+#[cfg(any(test, not(feature = "compact")))]
 use glam::{DVec3, DVec4};
 
 use crate::ambient::{Ambient, VecN, span_basis};
@@ -13,8 +13,8 @@ use crate::bezier::CubicSegment;
 use crate::curve::{Curve, Jet, Side, clamp_param};
 use crate::error::{PointError, SolveError, SplineError};
 use crate::manifold::Manifold;
-#[cfg(any(test, target_arch = "wasm32"))]
-use crate::recast::{Recast, to_sn};
+#[cfg(any(test, feature = "compact"))]
+use crate::recast::{Recast, to_sm};
 use crate::slerp_jet::ScalarJet;
 
 /// Two consecutive data points closer than this (radians) are [`SplineError::Coincident`]
@@ -340,7 +340,7 @@ impl<P: Manifold> BetaSpline<P> {
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 2 points;
     /// - [`SplineError::InvalidPoint`] with [`PointError::WrongDimension`] for points of
-    ///   spheres of different dimensions ([`SnPoint`](crate::SnPoint));
+    ///   spheres of different dimensions ([`SmPoint`](crate::SmPoint));
     /// - [`SplineError::InvalidParameter`] (`beta1`, `beta2`, `tolerance`,
     ///   `residual_tolerance`, `max_iterations`) for values out of range, non-finite, or lists
     ///   of a length other than `n + 1`;
@@ -384,9 +384,9 @@ impl<P: Manifold> BetaSpline<P> {
     }
 
     /// The construction of [`try_new`](Self::try_new) and
-    /// [`try_new_closed`](Self::try_new_closed): natively on `P` itself, in the wasm build once
-    /// on S^m for every point type ([`crate::recast`]; the same bits,
-    /// `tests::the_construction_gives_the_same_bits_on_sn`).
+    /// [`try_new_closed`](Self::try_new_closed): on `P` itself, or with the `compact` feature
+    /// once on S^m for every point type ([`crate::recast`]; the same bits,
+    /// `tests::the_construction_gives_the_same_bits_on_sm`).
     fn build(points: Vec<P>, params: &BetaParams, closed: bool) -> Result<Self, SplineError> {
         let min = if closed { 3 } else { 2 };
         if points.len() < min {
@@ -395,23 +395,23 @@ impl<P: Manifold> BetaSpline<P> {
                 got: points.len(),
             });
         }
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, params, closed);
-        #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, params, closed);
+        #[cfg(feature = "compact")]
+        return Self::construct_on_sm(points, params, closed);
     }
 
     /// [`construct`](Self::construct) on the points as points of S^m, the result converted
     /// back; `points` is not empty.
-    #[cfg(any(test, target_arch = "wasm32"))]
-    fn construct_on_sn(
+    #[cfg(any(test, feature = "compact"))]
+    fn construct_on_sm(
         points: Vec<P>,
         params: &BetaParams,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let to = Recast::to(&points[0]);
-        let sn = points.iter().map(to_sn).collect();
-        let c = BetaSpline::construct(sn, params, closed)?;
+        let sm = points.iter().map(to_sm).collect();
+        let c = BetaSpline::construct(sm, params, closed)?;
         Ok(Self {
             points: to.points(&c.points),
             aux: to.points(&c.aux),
@@ -842,17 +842,17 @@ fn solve<P: Manifold>(
         .iter()
         .map(|v| basis.iter().map(|b| b.dot(v)).collect())
         .collect();
-    // Natively S² and S³ solve in `DVec3` and `DVec4`, without allocation. The wasm build runs
-    // every rank in `VecN` (one copy of the kernel in the .wasm instead of three): padded to
+    // S² and S³ solve in `DVec3` and `DVec4`, without allocation. The `compact` build runs
+    // every rank in `VecN` (one copy of the kernel instead of three): padded to
     // the same 3 or 4 coordinates, it does the same operations on the same numbers in the same
     // order, so the result is the same bits (`tests::the_kernel_gives_the_same_bits_in_vecn`).
-    #[cfg(not(target_arch = "wasm32"))]
+    #[cfg(not(feature = "compact"))]
     let (d, iterations, residual) = match rank {
         0..=3 => run::<DVec3>(&coords, rank, 3, shape, solver, settings, closed),
         4 => run::<DVec4>(&coords, rank, 4, shape, solver, settings, closed),
         _ => run::<VecN>(&coords, rank, rank, shape, solver, settings, closed),
     };
-    #[cfg(target_arch = "wasm32")]
+    #[cfg(feature = "compact")]
     let (d, iterations, residual) =
         run::<VecN>(&coords, rank, rank.max(3), shape, solver, settings, closed);
     let fail = SolveError::NoConvergence {
@@ -913,13 +913,13 @@ mod tests {
     use super::*;
     use crate::recast::keys;
 
-    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// The `compact` build constructs on S^m and converts back; every field (and every error) must
     /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
-    /// each `f64` in the shortest form that reads back to the same bits). (Natively the S^m
-    /// construction of these keys runs the `DVec3`/`DVec4` kernel; that the wasm build's
-    /// `VecN` kernel gives the same bits is `the_kernel_gives_the_same_bits_in_vecn`.)
+    /// each `f64` in the shortest form that reads back to the same bits). (Without `compact` the
+    /// S^m construction of these keys runs the `DVec3`/`DVec4` kernel; that the `compact`
+    /// build's `VecN` kernel gives the same bits is `the_kernel_gives_the_same_bits_in_vecn`.)
     #[test]
-    fn the_construction_gives_the_same_bits_on_sn() {
+    fn the_construction_gives_the_same_bits_on_sm() {
         fn check<P: Manifold>(points: &[P]) -> usize {
             let mut built = 0;
             let m = points.len();
@@ -942,9 +942,9 @@ mod tests {
                                 ..BetaParams::default()
                             };
                             let native = BetaSpline::construct(points.to_vec(), &params, closed);
-                            let on_sn =
-                                BetaSpline::construct_on_sn(points.to_vec(), &params, closed);
-                            built += keys::same_bits(&native, &on_sn, &(points, &params, closed));
+                            let on_sm =
+                                BetaSpline::construct_on_sm(points.to_vec(), &params, closed);
+                            built += keys::same_bits(&native, &on_sm, &(points, &params, closed));
                         }
                     }
                 }
@@ -955,7 +955,7 @@ mod tests {
         assert!(built > 50, "{built} curves built");
     }
 
-    /// The wasm build solves S² and S³ in `VecN` padded to 3 and 4 coordinates; it must give
+    /// The `compact` build solves S² and S³ in `VecN` padded to 3 and 4 coordinates; it must give
     /// exactly what the native `DVec3` and `DVec4` kernels give.
     #[test]
     fn the_kernel_gives_the_same_bits_in_vecn() {
@@ -1006,12 +1006,12 @@ mod tests {
                     } else {
                         run::<DVec4>(coords, rank, 4, &shape, solver, settings, closed)
                     };
-                    let wasm =
+                    let compact =
                         run::<VecN>(coords, rank, rank.max(3), &shape, solver, settings, closed);
                     assert!(native.1 >= 1, "{solver:?} iterates");
                     assert_eq!(
                         bits(native),
-                        bits(wasm),
+                        bits(compact),
                         "{solver:?}, closed {closed}, rank {rank}"
                     );
                 }

@@ -299,8 +299,8 @@ pub struct CubicSegment<P: Manifold> {
     arcs: [FixedArc<P::Vector>; 3],
 }
 
-#[cfg(any(test, target_arch = "wasm32"))]
-impl CubicSegment<crate::SnPoint> {
+#[cfg(any(test, feature = "compact"))]
+impl CubicSegment<crate::SmPoint> {
     /// The same segment on the point type `Q` ([`crate::recast`]).
     pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CubicSegment<Q> {
         CubicSegment {

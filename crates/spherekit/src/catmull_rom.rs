@@ -10,8 +10,8 @@ use crate::error::SplineError;
 use crate::geodesic::{MIN_LOOP_POINTS, check_chain, check_loop};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
-#[cfg(any(test, target_arch = "wasm32"))]
-use crate::recast::{Recast, to_sn};
+#[cfg(any(test, feature = "compact"))]
+use crate::recast::{Recast, to_sm};
 use crate::s3::UnitQuat;
 use crate::slerp_jet::ScalarJet;
 
@@ -156,23 +156,23 @@ impl<P: Manifold> CatmullRom<P> {
         Self::intrinsic(points, knots, true)
     }
 
-    /// The intrinsic construction: natively on `P` itself, in the wasm build once on S^m for
+    /// The intrinsic construction: on `P` itself, or with the `compact` feature once on S^m for
     /// every point type ([`crate::recast`]; the same bits,
-    /// `tests::the_construction_gives_the_same_bits_on_sn`). `points` is not empty.
+    /// `tests::the_construction_gives_the_same_bits_on_sm`). `points` is not empty.
     fn intrinsic(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, closed);
-        #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, knots, closed);
+        #[cfg(feature = "compact")]
+        return Self::construct_on_sm(points, knots, closed);
     }
 
     /// [`construct`](Self::construct) on the points as points of S^m, the result converted
     /// back.
-    #[cfg(any(test, target_arch = "wasm32"))]
-    fn construct_on_sn(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+    #[cfg(any(test, feature = "compact"))]
+    fn construct_on_sm(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
         let to = Recast::to(&points[0]);
-        let sn = points.iter().map(to_sn).collect();
-        let c = CatmullRom::construct(sn, knots, closed)?;
+        let sm = points.iter().map(to_sm).collect();
+        let c = CatmullRom::construct(sm, knots, closed)?;
         Ok(Self {
             points: to.points(&c.points),
             closed: c.closed,
@@ -362,11 +362,11 @@ mod tests {
     use super::*;
     use crate::recast::keys;
 
-    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// The `compact` build constructs on S^m and converts back; every field (and every error) must
     /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
     /// each `f64` in the shortest form that reads back to the same bits).
     #[test]
-    fn the_construction_gives_the_same_bits_on_sn() {
+    fn the_construction_gives_the_same_bits_on_sm() {
         fn check<P: Manifold>(points: &[P]) -> usize {
             let mut built = 0;
             for closed in [false, true] {
@@ -386,8 +386,8 @@ mod tests {
                 let uneven: Vec<f64> = (0..n).map(|i| (i * i) as f64 * 0.3 + i as f64).collect();
                 for knots in [Knots::uniform(n), Knots::try_new(uneven).unwrap()] {
                     let native = CatmullRom::construct(points.to_vec(), knots.clone(), closed);
-                    let on_sn = CatmullRom::construct_on_sn(points.to_vec(), knots, closed);
-                    built += keys::same_bits(&native, &on_sn, &points);
+                    let on_sm = CatmullRom::construct_on_sm(points.to_vec(), knots, closed);
+                    built += keys::same_bits(&native, &on_sm, &points);
                 }
             }
             built

@@ -5,7 +5,7 @@
 //! vectors of ℝ^(m+1) (ℝ⁴ for quaternions), projected back onto the sphere.
 
 use crate::ambient::Ambient;
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 use crate::ambient::VecN;
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
@@ -127,8 +127,8 @@ fn ratios<V: Ambient>(
     Ok(ratios)
 }
 
-/// [`ratios`] of the vectors as vectors of `VecN` (the wasm build's one copy).
-#[cfg(any(test, target_arch = "wasm32"))]
+/// [`ratios`] of the vectors as vectors of `VecN` (the `compact` build's one copy).
+#[cfg(any(test, feature = "compact"))]
 fn ratios_in_vecn<V: Ambient>(
     vectors: &[V],
     knots: &Knots,
@@ -229,11 +229,11 @@ impl<P: Manifold> CatmullRomNlerp<P> {
         knots: Knots,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        // Natively in the point type's vectors; the wasm build checks every sphere's in `VecN`
+        // In the point type's vectors; the `compact` build checks every sphere's in `VecN`
         // (one copy of the code; the same bits, `tests::the_ratios_are_the_same_in_vecn`).
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         let ratios = ratios(&vectors, &knots, closed)?;
-        #[cfg(target_arch = "wasm32")]
+        #[cfg(feature = "compact")]
         let ratios = ratios_in_vecn(&vectors, &knots, closed)?;
         Ok(Self {
             points,
@@ -326,7 +326,7 @@ mod tests {
     use crate::S2Point;
     use crate::recast::keys;
 
-    /// The wasm build checks the segments in `VecN`; the ratios and the errors must be those of
+    /// The `compact` build checks the segments in `VecN`; the ratios and the errors must be those of
     /// the point type's own vectors, bit for bit.
     #[test]
     fn the_ratios_are_the_same_in_vecn() {

@@ -190,8 +190,8 @@ impl<P: Manifold> CircleArc<P> {
     }
 }
 
-#[cfg(any(test, target_arch = "wasm32"))]
-impl CircleArc<crate::SnPoint> {
+#[cfg(any(test, feature = "compact"))]
+impl CircleArc<crate::SmPoint> {
     /// The same arc on the point type `Q` ([`crate::recast`]).
     pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> CircleArc<Q> {
         CircleArc {

@@ -6,7 +6,7 @@
 //!
 //! Arrays need no shared dependency: `[f64; 3]` for [`S2Point`], `[f64; 4]` in a named order
 //! for [`UnitQuat`] ([`UnitQuat::from_xyzw`], [`UnitQuat::from_wxyz`]; there is no
-//! `TryFrom<[f64; 4]>`, whose order a reader could not tell), any length ≥ 2 for [`SnPoint`].
+//! `TryFrom<[f64; 4]>`, whose order a reader could not tell), any length ≥ 2 for [`SmPoint`].
 //! Every constructor normalises and fails with a [`PointError`] instead of returning NaN.
 //!
 //! With the `mint` feature, [`S2Point`] and [`UnitQuat`] convert from and to `mint::Vector3` and
@@ -15,7 +15,7 @@
 use glam::{DQuat, DVec3};
 
 use crate::error::PointError;
-use crate::{S2Point, SnPoint, UnitQuat};
+use crate::{S2Point, SmPoint, UnitQuat};
 
 /// # Arrays
 impl S2Point {
@@ -93,7 +93,7 @@ impl UnitQuat {
 }
 
 /// # Arrays
-impl SnPoint {
+impl SmPoint {
     /// Normalises `coords` onto the sphere S^(len − 1), as [`try_new`](Self::try_new).
     ///
     /// # Errors
@@ -104,31 +104,31 @@ impl SnPoint {
     /// # Examples
     ///
     /// ```
-    /// use spherekit::SnPoint;
+    /// use spherekit::SmPoint;
     ///
-    /// let p = SnPoint::from_slice(&[0.0, 0.0, 0.0, 0.0, 5.0]).unwrap();
+    /// let p = SmPoint::from_slice(&[0.0, 0.0, 0.0, 0.0, 5.0]).unwrap();
     /// assert_eq!((p.dim(), p.coords()), (4, &[0.0, 0.0, 0.0, 0.0, 1.0][..]));
-    /// assert_eq!(SnPoint::try_from([0.0, 0.0, 0.0, 0.0, 5.0]), Ok(p));
-    /// assert!(SnPoint::from_slice(&[1.0]).is_err());
+    /// assert_eq!(SmPoint::try_from([0.0, 0.0, 0.0, 0.0, 5.0]), Ok(p));
+    /// assert!(SmPoint::from_slice(&[1.0]).is_err());
     /// ```
     pub fn from_slice(coords: &[f64]) -> Result<Self, PointError> {
         Self::try_new(coords.to_vec())
     }
 }
 
-impl TryFrom<&[f64]> for SnPoint {
+impl TryFrom<&[f64]> for SmPoint {
     type Error = PointError;
 
-    /// [`SnPoint::from_slice`].
+    /// [`SmPoint::from_slice`].
     fn try_from(coords: &[f64]) -> Result<Self, PointError> {
         Self::from_slice(coords)
     }
 }
 
-impl<const N: usize> TryFrom<[f64; N]> for SnPoint {
+impl<const N: usize> TryFrom<[f64; N]> for SmPoint {
     type Error = PointError;
 
-    /// [`SnPoint::from_slice`]: S^(N − 1).
+    /// [`SmPoint::from_slice`]: S^(N − 1).
     fn try_from(coords: [f64; N]) -> Result<Self, PointError> {
         Self::from_slice(&coords)
     }

@@ -8,7 +8,7 @@ use core::f64::consts::TAU;
 use glam::{DQuat, DVec4};
 
 use crate::ambient::Ambient;
-use crate::arc_blend::{check_loop_neighbours, check_neighbours, check_order};
+use crate::arc_blend::{check_loop_neighbours, check_neighbours, check_smoothness};
 use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::flow::{Flow, LeftMultiplication, PlaneRotation, Segment, Weights};
@@ -258,12 +258,12 @@ struct Plan {
 /// ([`CornerCore::build`]; not generic, so one copy serves every sphere and flow).
 fn plan(
     thetas: &[f64],
-    order: usize,
+    smoothness: usize,
     cuts: &CornerCuts,
     timing: CornerTiming,
     closed: bool,
 ) -> Result<Plan, SplineError> {
-    let poly = check_order(order)?;
+    let poly = check_smoothness(smoothness)?;
     let m = thetas.len();
     let cuts = cuts.resolve(if closed { m } else { m - 1 }, closed)?;
     if !timing.start.is_finite() {
@@ -354,7 +354,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
     fn build(
         points: &[V],
         edges: Vec<(F, f64)>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
         closed: bool,
@@ -365,7 +365,7 @@ impl<V: Ambient, F: Flow<V>> CornerCore<V, F> {
             knots,
             cuts,
             poly,
-        } = plan(&thetas, order, cuts, timing, closed)?;
+        } = plan(&thetas, smoothness, cuts, timing, closed)?;
         let m = edges.len();
         // Each segment's width is its exact knot width, so that u = (t − t_i)/width is
         // consistent with `locate`.
@@ -483,23 +483,23 @@ pub struct CornerBlend<P: Manifold> {
 }
 
 impl<P: Manifold> CornerBlend<P> {
-    /// The default continuity order (C²).
-    pub const DEFAULT_ORDER: usize = 2;
+    /// The default smoothness (C²).
+    pub const DEFAULT_SMOOTHNESS: usize = 2;
 
-    /// Smooths the corners of the polyline through `points` with order `n = order` and the
+    /// Smooths the corners of the polyline through `points` with smoothness `n = smoothness` and the
     /// given `fraction` of every edge used by each corner blend.
     ///
     /// # Errors
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 3 points;
-    /// - [`SplineError::InvalidParameter`] (`order`) unless `1 ≤ order ≤ 10`, (`fraction`)
+    /// - [`SplineError::InvalidParameter`] (`smoothness`) unless `1 ≤ smoothness ≤ 10`, (`fraction`)
     ///   unless `0 < fraction ≤ 0.5`;
     /// - [`SplineError::Coincident`] / [`SplineError::Antipodal`] for coincident or antipodal
     ///   consecutive points (no unique great-circle edge).
-    pub fn try_new(points: Vec<P>, order: usize, fraction: f64) -> Result<Self, SplineError> {
+    pub fn try_new(points: Vec<P>, smoothness: usize, fraction: f64) -> Result<Self, SplineError> {
         Self::try_with(
             points,
-            order,
+            smoothness,
             &CornerCuts::Uniform(fraction),
             CornerTiming::default(),
         )
@@ -534,11 +534,11 @@ impl<P: Manifold> CornerBlend<P> {
     /// ```
     pub fn try_with(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, cuts, timing, false)
+        Self::build(points, smoothness, cuts, timing, false)
     }
 
     /// Smooths every corner of the closed polygon `P₀ → P₁ → … → P_{m−1} → P₀` (m ≥ 3), the
@@ -568,12 +568,12 @@ impl<P: Manifold> CornerBlend<P> {
     /// ```
     pub fn try_new_closed(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
         Self::try_with_closed(
             points,
-            order,
+            smoothness,
             &CornerCuts::Uniform(fraction),
             CornerTiming::default(),
         )
@@ -592,23 +592,23 @@ impl<P: Manifold> CornerBlend<P> {
     /// outgoing cuts whose ratios do not cancel would change the speed at the seam.
     pub fn try_with_closed(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, cuts, timing, true)
+        Self::build(points, smoothness, cuts, timing, true)
     }
 
     fn build(
         points: Vec<P>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
         closed: bool,
     ) -> Result<Self, SplineError> {
         let vs = polyline(&points, closed)?;
         let edges = great_circle_edges(&vs, closed)?;
-        let core = CornerCore::build(&vs, edges, order, cuts, timing, closed)?;
+        let core = CornerCore::build(&vs, edges, smoothness, cuts, timing, closed)?;
         Ok(Self { points, core })
     }
 
@@ -624,9 +624,9 @@ impl<P: Manifold> CornerBlend<P> {
         self.core.knots.as_slice()
     }
 
-    /// The continuity order `n`.
+    /// The smoothness `n`: the curve is Cⁿ at its joints.
     #[must_use]
-    pub fn order(&self) -> usize {
+    pub fn smoothness(&self) -> usize {
         self.core.poly.order()
     }
 
@@ -694,12 +694,12 @@ impl CornerBlend<S2Point> {
     /// ```
     pub fn try_with_arcs(
         points: Vec<S2Point>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
         bends: &[f64],
     ) -> Result<Self, SplineError> {
-        Self::arcs(points, order, cuts, timing, bends, false)
+        Self::arcs(points, smoothness, cuts, timing, bends, false)
     }
 
     /// The closed polygon of [`try_with_closed`](CornerBlend::try_with_closed) with the
@@ -712,17 +712,17 @@ impl CornerBlend<S2Point> {
     /// [`try_with_arcs`](Self::try_with_arcs) (`points.len()` bends).
     pub fn try_with_arcs_closed(
         points: Vec<S2Point>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
         bends: &[f64],
     ) -> Result<Self, SplineError> {
-        Self::arcs(points, order, cuts, timing, bends, true)
+        Self::arcs(points, smoothness, cuts, timing, bends, true)
     }
 
     fn arcs(
         points: Vec<S2Point>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
         bends: &[f64],
@@ -763,7 +763,7 @@ impl CornerBlend<S2Point> {
             *theta = if angle > 0.0 { angle } else { angle + TAU };
             *flow = PlaneRotation { a, b: e };
         }
-        let core = CornerCore::build(&vs, edges, order, cuts, timing, closed)?;
+        let core = CornerCore::build(&vs, edges, smoothness, cuts, timing, closed)?;
         Ok(Self { points, core })
     }
 }
@@ -853,8 +853,8 @@ pub struct CornerBlendS3 {
 }
 
 impl CornerBlendS3 {
-    /// The default continuity order (C²).
-    pub const DEFAULT_ORDER: usize = 2;
+    /// The default smoothness (C²).
+    pub const DEFAULT_SMOOTHNESS: usize = 2;
 
     /// Smooths the corners of the orientation polyline through `points`.
     ///
@@ -863,12 +863,12 @@ impl CornerBlendS3 {
     /// As [`CornerBlend::try_new`]; antipodal keys (the same orientation) are rejected.
     pub fn try_new(
         points: Vec<UnitQuat>,
-        order: usize,
+        smoothness: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
         Self::try_with(
             points,
-            order,
+            smoothness,
             &CornerCuts::Uniform(fraction),
             CornerTiming::default(),
         )
@@ -882,11 +882,11 @@ impl CornerBlendS3 {
     /// As [`CornerBlend::try_with`].
     pub fn try_with(
         points: Vec<UnitQuat>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, cuts, timing, false)
+        Self::build(points, smoothness, cuts, timing, false)
     }
 
     /// Smooths every corner of the closed orientation polygon `q₀ → … → q_{m−1} → q₀`, as
@@ -897,12 +897,12 @@ impl CornerBlendS3 {
     /// As [`CornerBlend::try_new_closed`].
     pub fn try_new_closed(
         points: Vec<UnitQuat>,
-        order: usize,
+        smoothness: usize,
         fraction: f64,
     ) -> Result<Self, SplineError> {
         Self::try_with_closed(
             points,
-            order,
+            smoothness,
             &CornerCuts::Uniform(fraction),
             CornerTiming::default(),
         )
@@ -915,16 +915,16 @@ impl CornerBlendS3 {
     /// As [`CornerBlend::try_with_closed`].
     pub fn try_with_closed(
         points: Vec<UnitQuat>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
     ) -> Result<Self, SplineError> {
-        Self::build(points, order, cuts, timing, true)
+        Self::build(points, smoothness, cuts, timing, true)
     }
 
     fn build(
         points: Vec<UnitQuat>,
-        order: usize,
+        smoothness: usize,
         cuts: &CornerCuts,
         timing: CornerTiming,
         closed: bool,
@@ -945,7 +945,7 @@ impl CornerBlendS3 {
                 Ok((LeftMultiplication { axis: n }, theta))
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let core = CornerCore::build(&vs, edges, order, cuts, timing, closed)?;
+        let core = CornerCore::build(&vs, edges, smoothness, cuts, timing, closed)?;
         Ok(Self { points, core })
     }
 
@@ -961,9 +961,9 @@ impl CornerBlendS3 {
         self.core.knots.as_slice()
     }
 
-    /// The continuity order `n`.
+    /// The smoothness `n`: the curve is Cⁿ at its joints.
     #[must_use]
-    pub fn order(&self) -> usize {
+    pub fn smoothness(&self) -> usize {
         self.core.poly.order()
     }
 

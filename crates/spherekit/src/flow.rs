@@ -54,9 +54,9 @@ impl<V: Ambient> Flow<V> for PlaneRotation<V> {
     }
 }
 
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 impl<V: Ambient> PlaneRotation<V> {
-    /// The same rotation in the ambient space of `Q` (the wasm build's construction on S^m,
+    /// The same rotation in the ambient space of `Q` (the `compact` build's construction on S^m,
     /// [`crate::recast`]).
     pub(crate) fn recast<Q: crate::Manifold>(
         &self,
@@ -69,7 +69,7 @@ impl<V: Ambient> PlaneRotation<V> {
     }
 }
 
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 impl<V: Ambient> Segment<V, PlaneRotation<V>> {
     /// The same segment in the ambient space of `Q` ([`crate::recast`]).
     pub(crate) fn recast<Q: crate::Manifold>(

@@ -8,8 +8,8 @@ use crate::curve::{Curve, Jet, Side};
 use crate::error::SplineError;
 use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame, renormalize};
-#[cfg(any(test, target_arch = "wasm32"))]
-use crate::recast::{Recast, to_sn};
+#[cfg(any(test, feature = "compact"))]
+use crate::recast::{Recast, to_sm};
 
 /// Checks that there are at least `min` points and no antipodal neighbours.
 pub(crate) fn check_chain<P: Manifold>(points: &[P], min: usize) -> Result<(), SplineError> {
@@ -75,7 +75,7 @@ struct Arc<V> {
 /// `[uₙ, uₙ₊₁]`, and is C⁰ at the seam too. On S³ the keys are used
 /// as given (no sign flips): canonicalise them first with [`unflip`](crate::unflip) for the
 /// shortest rotations. Works on any sphere ([`S2Point`](crate::S2Point),
-/// [`UnitQuat`](crate::UnitQuat), [`SnPoint`](crate::SnPoint)).
+/// [`UnitQuat`](crate::UnitQuat), [`SmPoint`](crate::SmPoint)).
 ///
 /// # Examples
 ///
@@ -137,22 +137,22 @@ impl<P: Manifold> GeodesicSpline<P> {
     }
 
     /// The arcs between consecutive `points` (the loop's already wrapped; at least two):
-    /// natively on `P` itself, in the wasm build once on S^m for every point type
-    /// ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
+    /// on `P` itself, or with the `compact` feature once on S^m for every point type
+    /// ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sm`).
     fn build(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, closed);
-        #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, knots, closed);
+        #[cfg(feature = "compact")]
+        return Self::construct_on_sm(points, knots, closed);
     }
 
     /// [`construct`](Self::construct) on the points as points of S^m, the result converted
     /// back.
-    #[cfg(any(test, target_arch = "wasm32"))]
-    fn construct_on_sn(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
+    #[cfg(any(test, feature = "compact"))]
+    fn construct_on_sm(points: Vec<P>, knots: Knots, closed: bool) -> Result<Self, SplineError> {
         let to = Recast::to(&points[0]);
-        let sn = points.iter().map(to_sn).collect();
-        let c = GeodesicSpline::construct(sn, knots, closed)?;
+        let sm = points.iter().map(to_sm).collect();
+        let c = GeodesicSpline::construct(sm, knots, closed)?;
         Ok(Self {
             points: to.points(&c.points),
             knots: c.knots,
@@ -400,11 +400,11 @@ mod tests {
     use super::*;
     use crate::recast::keys;
 
-    /// The wasm build constructs on S^m and converts back; every field (and every error) must
+    /// The `compact` build constructs on S^m and converts back; every field (and every error) must
     /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
     /// each `f64` in the shortest form that reads back to the same bits).
     #[test]
-    fn the_construction_gives_the_same_bits_on_sn() {
+    fn the_construction_gives_the_same_bits_on_sm() {
         fn check<P: Manifold>(points: &[P]) -> usize {
             let mut built = 0;
             for closed in [false, true] {
@@ -417,8 +417,8 @@ mod tests {
                 let uneven: Vec<f64> = (0..n).map(|i| (i * i) as f64 * 0.3 + i as f64).collect();
                 for knots in [Knots::uniform(n), Knots::try_new(uneven).unwrap()] {
                     let native = GeodesicSpline::construct(points.clone(), knots.clone(), closed);
-                    let on_sn = GeodesicSpline::construct_on_sn(points.clone(), knots, closed);
-                    built += keys::same_bits(&native, &on_sn, &points);
+                    let on_sm = GeodesicSpline::construct_on_sm(points.clone(), knots, closed);
+                    built += keys::same_bits(&native, &on_sm, &points);
                 }
             }
             built

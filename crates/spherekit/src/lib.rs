@@ -102,11 +102,16 @@
 //! - `libm`: route every transcendental function through the `libm` crate, so that native and
 //!   WebAssembly builds give bit-identical results. Enable it in binaries that render.
 //! - `serde`: `Serialize` for points.
+//! - `compact`: compile each construction whose arithmetic is the same on every sphere (arc
+//!   blend, Beta spline, intrinsic Catmull–Rom, geodesic, cubic) once, on S^m, converting the
+//!   keys and the built curve: smaller code (the browser build turns it on), the same bits,
+//!   construction slower (the conversions, and `VecN` arithmetic, which allocates).
+//!   Evaluation is unchanged.
 //! - `mint`: conversions of [`S2Point`] and [`UnitQuat`] from and to [`mint`]'s `Vector3` and
 //!   `Quaternion` (`f64`, and `f32` in), the way to and from another glam version (bevy's);
 //!   glam's own `mint` conversions for the re-exported [`glam`]. The point types also convert
 //!   from and to plain arrays without any feature (`S2Point::from_array`,
-//!   `UnitQuat::from_xyzw`, `SnPoint::from_slice`, and `TryFrom`).
+//!   `UnitQuat::from_xyzw`, `SmPoint::from_slice`, and `TryFrom`).
 //!
 //! An application on another glam version (bevy's, say) converts through mint, with glam's
 //! `mint` feature on its side, without the two glams having to agree:
@@ -158,7 +163,7 @@ mod knots;
 mod manifold;
 mod math;
 pub mod quaternion;
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 mod recast;
 mod rotation;
 mod rotation_loop;
@@ -166,12 +171,12 @@ mod s2;
 mod s3;
 mod section;
 mod slerp_jet;
+mod sm;
 mod smoothing;
-mod sn;
 mod squad;
 
 pub use ambient::{Ambient, VecN};
-pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
+pub use arc_blend::{ArcBlend, ArcBlendTiming, MAX_SMOOTHNESS};
 pub use arclength::{ArcLength, ArcLengthInfo, DEFAULT_ARC_LENGTH_ACCURACY, Stall};
 pub use beta_spline::{
     BetaParams, BetaSolver, BetaSpline, COINCIDENT_TOLERANCE, ShapeParam, SolveInfo,
@@ -205,8 +210,8 @@ pub use s3::{
 };
 pub use section::PlaneSection;
 pub use slerp_jet::{ScalarJet, slerp_jet};
+pub use sm::SmPoint;
 pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
-pub use sn::SnPoint;
 pub use squad::Squad;
 
 /// The README's Rust example, compiled and run as a doctest.

@@ -1,28 +1,29 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! Constructions run once, on S^m, in the wasm build.
+//! Constructions run once, on S^m: the `compact` feature.
 //!
 //! Every [`Manifold`] operation is a default method over [`Ambient`], and the ambient types do
 //! the same arithmetic coordinate by coordinate: glam's `DVec3::dot`/`DVec4::dot` is
 //! `x·x′ + y·y′ + z·z′ (+ w·w′)` from left to right, [`VecN`]'s the same sum starting from
 //! −0.0 (`−0.0 + a = a` exactly); sums, differences and scalings are per coordinate in both.
 //! So a construction whose arithmetic never leaves the `Manifold`/`Ambient` operations gives
-//! the same bits on [`SnPoint`] as on [`S2Point`](crate::S2Point) or
-//! [`UnitQuat`](crate::UnitQuat) with the same coordinates. The wasm build uses that to keep
-//! one copy of such constructions in the .wasm instead of three: it converts the keys to
-//! `SnPoint`, builds there, and converts the built curve back ([`Recast`]), so the curve is
-//! evaluated on its own point type (a `VecN` jet allocates). Native builds construct on the
-//! point type itself (no conversions). Each construction that does this has a test that both
-//! paths give the same bits.
+//! the same bits on [`SmPoint`] as on [`S2Point`](crate::S2Point) or
+//! [`UnitQuat`](crate::UnitQuat) with the same coordinates. With the `compact` feature (which
+//! the browser build turns on, to keep the .wasm small) such constructions are compiled once
+//! instead of once per point type: the keys are converted to `SmPoint`, the curve is built
+//! there and converted back ([`Recast`]), so it is evaluated on its own point type (a `VecN`
+//! jet would allocate). Without the feature the constructions run on the point type itself
+//! (no conversions). Each construction that does this has a test that both paths give the
+//! same bits, compiled whether the feature is on or not.
 
 use crate::ambient::{Ambient, VecN};
 use crate::manifold::Manifold;
-use crate::sn::SnPoint;
+use crate::sm::SmPoint;
 
 /// The point `p` as a point of S^m with the same coordinates.
-pub(crate) fn to_sn<P: Manifold>(p: &P) -> SnPoint {
-    SnPoint::from_vector_unchecked(VecN::new(p.to_vector().to_vec()))
+pub(crate) fn to_sm<P: Manifold>(p: &P) -> SmPoint {
+    SmPoint::from_vector_unchecked(VecN::new(p.to_vector().to_vec()))
 }
 
 /// Converts vectors and points to the point type `Q`, coordinate by coordinate.
@@ -45,12 +46,12 @@ impl<Q: Manifold> Recast<Q> {
     }
 
     /// The point of `Q` with the coordinates of `p`.
-    pub(crate) fn point(&self, p: &SnPoint) -> Q {
+    pub(crate) fn point(&self, p: &SmPoint) -> Q {
         Q::from_vector_unchecked(self.like.with_coords(p.coords()))
     }
 
     /// [`point`](Self::point) of every point of `ps`.
-    pub(crate) fn points(&self, ps: &[SnPoint]) -> Vec<Q> {
+    pub(crate) fn points(&self, ps: &[SmPoint]) -> Vec<Q> {
         ps.iter().map(|p| self.point(p)).collect()
     }
 }
@@ -69,10 +70,10 @@ pub(crate) mod keys {
     /// back to the same bits); `context` is printed when they differ.
     pub(crate) fn same_bits<T: Debug, E: Debug>(
         native: &Result<T, E>,
-        on_sn: &Result<T, E>,
+        on_sm: &Result<T, E>,
         context: &dyn Debug,
     ) -> usize {
-        assert_eq!(format!("{native:?}"), format!("{on_sn:?}"), "{context:?}");
+        assert_eq!(format!("{native:?}"), format!("{on_sm:?}"), "{context:?}");
         usize::from(native.is_ok())
     }
 

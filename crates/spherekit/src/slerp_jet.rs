@@ -238,7 +238,7 @@ impl<V: Ambient> FixedArc<V> {
     }
 
     /// The same arc in the ambient space of `Q` ([`crate::recast`]).
-    #[cfg(any(test, target_arch = "wasm32"))]
+    #[cfg(any(test, feature = "compact"))]
     pub(crate) fn recast<Q: Manifold>(&self, to: &crate::recast::Recast<Q>) -> FixedArc<Q::Vector> {
         FixedArc {
             start: to.vector(&self.start),

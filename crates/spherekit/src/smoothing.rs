@@ -67,7 +67,7 @@ pub struct SmoothingPolynomials {
 }
 
 /// Orders with `2n < TABLE` (all the spline orders) keep their binomial coefficients.
-const TABLE: usize = 2 * crate::arc_blend::MAX_BLEND_ORDER + 1;
+const TABLE: usize = 2 * crate::arc_blend::MAX_SMOOTHNESS + 1;
 
 impl SmoothingPolynomials {
     /// The largest supported order `n` (degree `2n + 1`).

@@ -4,7 +4,7 @@
 //! The point types from and to arrays (and mint, with the feature): round trips, normalisation
 //! and typed errors for bad input.
 
-use spherekit::{PointError, S2Point, SnPoint, UnitQuat};
+use spherekit::{PointError, S2Point, SmPoint, UnitQuat};
 
 /// A vector of `n` components in [-10, 10], not all tiny.
 fn vector<const N: usize>(
@@ -76,20 +76,20 @@ fn arrays_round_trip_through_the_point_types() {
         );
 
         let v6: [f64; 6] = vector(u)?;
-        let s = SnPoint::try_from(v6).unwrap();
+        let s = SmPoint::try_from(v6).unwrap();
         assert_eq!(s.dim(), 5, "six coordinates are S^5");
         assert!(
             close(s.coords(), &normalized(&v6)),
-            "SnPoint normalises {v6:?}"
+            "SmPoint normalises {v6:?}"
         );
         assert_eq!(
-            SnPoint::try_from(&v6[..]),
+            SmPoint::try_from(&v6[..]),
             Ok(s.clone()),
             "slices and arrays agree"
         );
         assert!(
             close(
-                SnPoint::from_slice(s.coords()).unwrap().coords(),
+                SmPoint::from_slice(s.coords()).unwrap().coords(),
                 s.coords()
             ),
             "a unit vector comes back as itself"
@@ -121,7 +121,7 @@ fn bad_arrays_are_typed_errors() {
         "zero quaternion"
     );
     assert_eq!(
-        SnPoint::try_from([2.0]),
+        SmPoint::try_from([2.0]),
         Err(PointError::WrongDimension {
             expected: 2,
             got: 1
@@ -129,7 +129,7 @@ fn bad_arrays_are_typed_errors() {
         "S^0 is not a sphere here"
     );
     assert_eq!(
-        SnPoint::from_slice(&[]),
+        SmPoint::from_slice(&[]),
         Err(PointError::WrongDimension {
             expected: 2,
             got: 0
@@ -137,7 +137,7 @@ fn bad_arrays_are_typed_errors() {
         "no coordinates"
     );
     assert_eq!(
-        SnPoint::try_from([0.0, f64::NAN, 1.0]),
+        SmPoint::try_from([0.0, f64::NAN, 1.0]),
         Err(PointError::NonFinite),
         "NaN coordinate"
     );

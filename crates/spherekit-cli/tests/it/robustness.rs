@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use serde_json::json;
-use spherekit_scene::{METHODS, Scene, Spheres};
+use spherekit_scene::{METHODS, Scene, Spaces};
 
 use crate::robust::{Outcome, check_scene};
 
@@ -156,10 +156,10 @@ fn random_walk(coords: usize, n: usize, seed: u64) -> Vec<Vec<f64>> {
 fn hundred_thousand_key_random_walks() {
     let mut failures = Vec::new();
     for method in METHODS.iter().filter(|m| !m.single_piece) {
-        let spaces: &[(&str, usize)] = match method.spheres {
-            Spheres::All => &[("S2", 3), ("S3", 4)],
-            Spheres::S3 => &[("S3", 4)],
-            Spheres::S2 => &[("S2", 3)],
+        let spaces: &[(&str, usize)] = match method.spaces {
+            Spaces::All => &[("S2", 3), ("S3", 4)],
+            Spaces::S3 => &[("S3", 4)],
+            Spaces::S2 => &[("S2", 3)],
         };
         for &(space, coords) in spaces {
             let scene = json!({
@@ -186,14 +186,14 @@ fn hundred_thousand_key_random_walks() {
 fn ten_thousand_keys() {
     let mut failures = Vec::new();
     for method in METHODS {
-        let spaces: &[(&str, usize)] = match method.spheres {
-            Spheres::All => &[("S2", 3), ("S3", 4), ("S5", 6)],
-            Spheres::S3 => &[("S3", 4)],
-            Spheres::S2 => &[("S2", 3)],
+        let spaces: &[(&str, usize)] = match method.spaces {
+            Spaces::All => &[("S2", 3), ("S3", 4), ("S5", 6)],
+            Spaces::S3 => &[("S3", 4)],
+            Spaces::S2 => &[("S2", 3)],
         };
         let one_curve = method.single_piece;
         // De Casteljau's triangle on S^m: O(n²) slerps per evaluation.
-        let n = if one_curve && method.spheres == Spheres::All {
+        let n = if one_curve && method.spaces == Spaces::All {
             300
         } else {
             10_000

@@ -15,7 +15,7 @@ use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
 use serde_json::{Value, json};
-use spherekit_scene::{METHODS, Spheres};
+use spherekit_scene::{METHODS, Spaces};
 
 fn spherekit(args: &[&str], stdin: &str) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_spherekit"))
@@ -48,7 +48,7 @@ fn sample(scene: &Value, extra: &[&str]) -> Result<Value, String> {
 }
 
 fn scene(m: &spherekit_scene::Method, extra: &Value) -> Value {
-    let (space, points) = if m.spheres == Spheres::S3 {
+    let (space, points) = if m.spaces == Spaces::S3 {
         (
             "S3",
             json!([
@@ -184,7 +184,7 @@ fn arclength_on_every_method_samples_over_its_length_at_unit_speed() {
             );
         }
         // |ω| = 1 on S³, |c′| = 1 elsewhere.
-        let field = if m.spheres == Spheres::S3 {
+        let field = if m.spaces == Spaces::S3 {
             "angular_velocity"
         } else {
             "velocity"

@@ -178,7 +178,7 @@ pub fn check_scene_capped(
         match c {
             BuiltCurve::S2(b) => check_built(&scene, policy, b),
             BuiltCurve::S3(b) => check_built(&scene, policy, b),
-            BuiltCurve::Sn(b) => check_built(&scene, policy, b),
+            BuiltCurve::Sm(b) => check_built(&scene, policy, b),
         }?;
     }
     let json = scene.sample_json_with(
@@ -193,7 +193,7 @@ pub fn check_scene_capped(
         return Err("the sample output has a non-finite number".into());
     }
     if let Some(size) = render_size
-        && matches!(scene.space, Space::S2 | Space::S3 | Space::Sn(1))
+        && matches!(scene.space, Space::S2 | Space::S3 | Space::Sm(1))
         && let Err(e) = spherekit_render::render_built(&scene, &curves, size)
     {
         // A bad `view` (read by the renderer only) is a rejection like any other.
@@ -255,7 +255,7 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
     let methods: Vec<&'static Method> = METHODS
         .iter()
         .copied()
-        .filter(|m| m.spheres.contains(parsed))
+        .filter(|m| m.spaces.contains(parsed))
         .collect();
     let method = pick(u, &methods)?;
     // Mostly enough points for every method (4); sometimes too few.
@@ -344,7 +344,7 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
     // Each parameter of the method's schema, sometimes, at an extreme or ordinary value.
     let mut params = Map::new();
     for p in method.params {
-        if p.advanced || !p.spheres.contains(parsed) || !u.ratio(2, 3)? {
+        if p.advanced || !p.spaces.contains(parsed) || !u.ratio(2, 3)? {
             continue;
         }
         let value = match p.kind {

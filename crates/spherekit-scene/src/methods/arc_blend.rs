@@ -4,37 +4,39 @@
 //! `arc-blend`: [`spherekit::ArcBlend`].
 
 use serde_json::json;
-use spherekit::{ArcBlend, ArcBlendTiming, MAX_BLEND_ORDER};
+use spherekit::{ArcBlend, ArcBlendTiming, MAX_SMOOTHNESS};
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
 use crate::params::Param;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
-/// The continuity order `n` of Pobegailo's blends.
-pub(crate) const ORDER: Param = Param::integer(
-    "order",
-    "order n",
-    "the continuity order n: the curve is Cⁿ at every joint",
-    [2, 1, MAX_BLEND_ORDER as u64],
-);
+/// The smoothness `n` of Pobegailo's blends (formerly `order`, a name that Python's
+/// `curve(t, order)`, the derivative order, also uses).
+pub(crate) const SMOOTHNESS: Param = Param::integer(
+    "smoothness",
+    "smoothness n",
+    "the curve is Cⁿ at every joint",
+    [2, 1, MAX_SMOOTHNESS as u64],
+)
+.formerly("order");
 
 pub(crate) static METHOD: Method = Method {
     id: "arc-blend",
     name: "Arc blend",
     type_name: "ArcBlend",
     summary: "Pobegailo's interpolating Cⁿ spline blending circle arcs",
-    continuity: "Cⁿ (n = order ≤ 10)",
+    continuity: "Cⁿ (n = smoothness ≤ 10)",
     source: "Pobegailo (2019), ch. 7–9: §8.4 Algorithm 8.1 (S²), §9.4 Algorithm 9.1 (S³)",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::Computed,
     min_points: 3,
     interpolates: true,
     single_piece: false,
     closes: true,
     params: &[
-        ORDER,
+        SMOOTHNESS,
         Param::choice(
             "timing",
             "timing",
@@ -46,7 +48,7 @@ pub(crate) static METHOD: Method = Method {
 };
 
 fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
-    let order = input.params.integer("order")?;
+    let smoothness = input.params.integer("smoothness")?;
     let timing = match input.params.choice("timing")? {
         "book" => ArcBlendTiming::Book,
         "arc-length" => ArcBlendTiming::ArcLength,
@@ -58,15 +60,17 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let (knots, used);
     let built = on_every_sphere!(input.points, |p| {
         let curve = if closed {
-            ArcBlend::try_with_closed(p.clone(), order, timing.clone())?
+            ArcBlend::try_with_closed(p.clone(), smoothness, timing.clone())?
         } else {
-            ArcBlend::try_with(p.clone(), order, timing.clone())?
+            ArcBlend::try_with(p.clone(), smoothness, timing.clone())?
         };
         knots = curve.knots().to_vec();
         used = curve.timing().name();
         Built::new(curve, p)
     });
-    let built = built.with_info("knots", json!(knots)).with_order(order);
+    let built = built
+        .with_info("knots", json!(knots))
+        .with_order(smoothness);
     // `info.timing` says when the curve is not on the book's knots (auto switched away from
     // them, or another timing was asked for).
     Ok(if used == "book" {

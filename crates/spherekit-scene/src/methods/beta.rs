@@ -9,7 +9,7 @@ use spherekit::{BetaParams, BetaSolver, BetaSpline, ShapeParam};
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
 use crate::params::{NumberOrList, Param, Params};
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -19,7 +19,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "spherical Beta spline with bias β₁ and tension β₂, interpolating by a Newton solver",
     continuity: "G¹ (C¹ at β₁ = 1)",
     source: "the spherical cubic Beta spline on S^m with shape parameters β₁, β₂ (after Barsky's Beta-splines)",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::None,
     min_points: 2,
     interpolates: true,

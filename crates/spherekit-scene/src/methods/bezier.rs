@@ -7,7 +7,7 @@ use spherekit::Bezier;
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -17,7 +17,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "spherical Bézier curve of any degree by de Casteljau",
     continuity: "C^∞",
     source: "Shoemake (1985), Animating rotation with quaternion curves",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::None,
     min_points: 2,
     interpolates: false,

@@ -7,7 +7,7 @@ use spherekit::BezierKim;
 
 use crate::built::{Built, BuiltCurve};
 use crate::error::SceneError;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -17,7 +17,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "Kim-Kim-Shin cumulative Bézier quaternion curve",
     continuity: "C^∞",
     source: "Kim, Kim & Shin (1995), A general construction scheme for unit quaternion curves with simple high order derivatives",
-    spheres: Spheres::S3,
+    spaces: Spaces::S3,
     knots: KnotRule::None,
     min_points: 2,
     interpolates: false,

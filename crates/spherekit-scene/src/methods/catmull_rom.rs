@@ -8,7 +8,7 @@ use spherekit::CatmullRom;
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
 use crate::params::Param;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::{Input, Points};
 
 pub(crate) static METHOD: Method = Method {
@@ -18,7 +18,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "Catmull-Rom spline by slerps (first and last points steer the ends; closed: every point a key)",
     continuity: "C¹",
     source: "Catmull & Rom (1974); on S³ by slerps as in the textbook quaternion Catmull-Rom",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::PerPoint { skip: 1 },
     min_points: 4,
     interpolates: false,

@@ -7,7 +7,7 @@ use spherekit::CatmullRomNlerp;
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -17,7 +17,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "Euclidean Catmull-Rom of the points in ℝ^(m+1) (ℝ⁴ for quaternions), normalised: not constant speed, off the great circles (first and last points steer the ends; closed: every point a key)",
     continuity: "C¹",
     source: "Catmull & Rom (1974); normalised in ℝ⁴ as in Gortler (2012), §9.3",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::PerPoint { skip: 1 },
     min_points: 4,
     interpolates: false,

@@ -9,7 +9,7 @@ use spherekit::{CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, DEFAULT_CO
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
 use crate::params::{NumberOrList, Param, Params};
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::{Input, Points};
 
 pub(crate) static METHOD: Method = Method {
@@ -17,16 +17,16 @@ pub(crate) static METHOD: Method = Method {
     name: "Corner blend",
     type_name: "CornerBlend",
     summary: "Pobegailo's corner smoothing of a polyline of great-circle (S2: or small-circle) arcs",
-    continuity: "Cⁿ (n = order ≤ 10)",
+    continuity: "Cⁿ (n = smoothness ≤ 10)",
     source: "Pobegailo (2019), §8.5–8.8 (S²) and §9.5–9.8 (S³)",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::Computed,
     min_points: 3,
     interpolates: false,
     single_piece: false,
     closes: true,
     params: &[
-        super::arc_blend::ORDER,
+        super::arc_blend::SMOOTHNESS,
         Param::number(
             "fraction",
             "fraction",
@@ -101,7 +101,7 @@ fn cuts(params: &mut Params<'_>) -> Result<CornerCuts, SceneError> {
 }
 
 fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
-    let order = input.params.integer("order")?;
+    let smoothness = input.params.integer("smoothness")?;
     let mut cuts = cuts(&mut input.params)?;
     let timing = CornerTiming {
         start: input.params.number("start")?,
@@ -110,7 +110,7 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     let count = match &input.points {
         Points::S2(p) => p.len(),
         Points::S3(p) => p.len(),
-        Points::Sn(p) => p.len(),
+        Points::Sm(p) => p.len(),
     };
     // A closed polygon has a corner at every point and an edge after every point.
     let closed = input.closed;
@@ -139,9 +139,9 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         Points::S3(keys) => {
             // The book's orientation construction (rotations act by left multiplication).
             let curve = if closed {
-                CornerBlendS3::try_with_closed(keys.clone(), order, &cuts, timing)?
+                CornerBlendS3::try_with_closed(keys.clone(), smoothness, &cuts, timing)?
             } else {
-                CornerBlendS3::try_with(keys.clone(), order, &cuts, timing)?
+                CornerBlendS3::try_with(keys.clone(), smoothness, &cuts, timing)?
             };
             knots = curve.knots().to_vec();
             BuiltCurve::S3(Built::new(curve, keys))
@@ -149,22 +149,24 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         Points::S2(p) if bends.is_some() => {
             let bends = bends.unwrap_or_default();
             let curve = if closed {
-                CornerBlend::try_with_arcs_closed(p.clone(), order, &cuts, timing, &bends)?
+                CornerBlend::try_with_arcs_closed(p.clone(), smoothness, &cuts, timing, &bends)?
             } else {
-                CornerBlend::try_with_arcs(p.clone(), order, &cuts, timing, &bends)?
+                CornerBlend::try_with_arcs(p.clone(), smoothness, &cuts, timing, &bends)?
             };
             knots = curve.knots().to_vec();
             BuiltCurve::S2(Built::new(curve, p))
         }
         points => on_every_sphere!(points, |p| {
             let curve = if closed {
-                CornerBlend::try_with_closed(p.clone(), order, &cuts, timing)?
+                CornerBlend::try_with_closed(p.clone(), smoothness, &cuts, timing)?
             } else {
-                CornerBlend::try_with(p.clone(), order, &cuts, timing)?
+                CornerBlend::try_with(p.clone(), smoothness, &cuts, timing)?
             };
             knots = curve.knots().to_vec();
             Built::new(curve, p)
         }),
     };
-    Ok(built.with_info("knots", json!(knots)).with_order(order))
+    Ok(built
+        .with_info("knots", json!(knots))
+        .with_order(smoothness))
 }

@@ -10,7 +10,7 @@ use spherekit::{Ambient, CubicEnd, CubicSpline, SplineError, UnitQuat};
 use crate::built::{Built, BuiltCurve, ScenePoint, on_every_sphere};
 use crate::error::{SceneError, field_error};
 use crate::params::Param;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::{Input, Points};
 
 pub(crate) static METHOD: Method = Method {
@@ -20,7 +20,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "C² cubic spline through the points (keys) at their times",
     continuity: "C²",
     source: "cubic in the tangent space of each key, as scipy.spatial.transform.RotationSpline (Virtanen et al. 2020)",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::PerPoint { skip: 0 },
     min_points: 2,
     interpolates: true,
@@ -156,8 +156,8 @@ fn build_curve(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         let end = match (end, &clamped) {
             ("scipy", _) => CubicEnd::Scipy,
             (_, Some((a, b))) => CubicEnd::Clamped {
-                start: tangent_of(&p, "start_velocity", a)?,
-                end: tangent_of(&p, "end_velocity", b)?,
+                start_velocity: tangent_of(&p, "start_velocity", a)?,
+                end_velocity: tangent_of(&p, "end_velocity", b)?,
             },
             _ => CubicEnd::Natural,
         };

@@ -9,7 +9,7 @@ use spherekit::{GammaSpline, Gammas, LastEdge};
 use crate::built::{Built, BuiltCurve};
 use crate::error::SceneError;
 use crate::params::{NumberOrList, Param};
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -19,7 +19,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "Gamma quaternion spline (Boehm's Gamma spline on S³)",
     continuity: "C¹ (C² under a condition on γ and the knots)",
     source: "Boehm (1985), Curvature continuous curves and surfaces; lifted to S³ with Kim, Kim & Shin's cumulative cubic Bézier segments",
-    spheres: Spheres::S3,
+    spaces: Spaces::S3,
     knots: KnotRule::PerPoint { skip: 1 },
     min_points: 4,
     interpolates: false,

@@ -7,7 +7,7 @@ use spherekit::NlerpSpline;
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -17,7 +17,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "piecewise normalised-linear interpolation through the points",
     continuity: "C⁰",
     source: "normalised linear interpolation of the ambient coordinates",
-    spheres: Spheres::All,
+    spaces: Spaces::All,
     knots: KnotRule::PerPoint { skip: 0 },
     min_points: 2,
     interpolates: true,

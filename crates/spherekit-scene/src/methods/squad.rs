@@ -7,7 +7,7 @@ use spherekit::Squad;
 
 use crate::built::{Built, BuiltCurve};
 use crate::error::SceneError;
-use crate::registry::{KnotRule, Method, Spheres};
+use crate::registry::{KnotRule, Method, Spaces};
 use crate::scene::Input;
 
 pub(crate) static METHOD: Method = Method {
@@ -17,7 +17,7 @@ pub(crate) static METHOD: Method = Method {
     summary: "Shoemake's squad through keys",
     continuity: "C¹",
     source: "Shoemake (1987), Quaternion calculus and fast animation (SIGGRAPH course notes)",
-    spheres: Spheres::S3,
+    spaces: Spaces::S3,
     knots: KnotRule::PerPoint { skip: 0 },
     min_points: 2,
     interpolates: true,

@@ -63,7 +63,7 @@ fn batch_equals_one_at_a_time_for_every_registered_method() {
         let r = match &curves[0] {
             BuiltCurve::S2(b) => check(name, b),
             BuiltCurve::S3(b) => check(name, b),
-            BuiltCurve::Sn(b) => check(name, b),
+            BuiltCurve::Sm(b) => check(name, b),
         };
         failures.extend(r.err());
     }

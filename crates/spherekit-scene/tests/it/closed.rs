@@ -105,7 +105,7 @@ fn built_s3(scene: &serde_json::Value) -> Built<UnitQuat> {
 fn a_loop_of_one_full_turn_is_a_loop_of_rotations_for_every_method() {
     let closing: Vec<_> = METHODS
         .iter()
-        .filter(|m| m.closes && m.spheres.contains(Space::S3))
+        .filter(|m| m.closes && m.spaces.contains(Space::S3))
         .collect();
     assert!(closing.len() >= 10, "every method that closes on S3");
     for method in closing {

@@ -23,7 +23,7 @@ fn starts(doc: &Document) -> Vec<Vec<f64>> {
                 .as_dvec3()
                 .to_array()
                 .to_vec(),
-            BuiltCurve::Sn(b) => b.curve.eval(b.curve.domain()[0]).coords().to_vec(),
+            BuiltCurve::Sm(b) => b.curve.eval(b.curve.domain()[0]).coords().to_vec(),
         })
         .collect()
 }

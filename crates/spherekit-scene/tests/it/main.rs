@@ -13,6 +13,7 @@ mod batch;
 mod closed;
 mod corner_params;
 mod edit;
+mod names;
 mod registry;
 mod scene_sample;
 #[path = "../support/cases.rs"]

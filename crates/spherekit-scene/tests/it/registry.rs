@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 
 use serde_json::json;
-use spherekit_scene::{KnotRule, METHODS, MIN_CLOSED_POINTS, ParamKind, Scene, Spheres};
+use spherekit_scene::{KnotRule, METHODS, MIN_CLOSED_POINTS, ParamKind, Scene, Spaces};
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -128,10 +128,10 @@ fn loop_points(space: &str, n: usize) -> Vec<Vec<f64>> {
 #[test]
 fn descriptors_match_the_constructions() {
     for m in METHODS {
-        let spaces: &[&str] = match m.spheres {
-            Spheres::All => &["S2", "S3", "S5"],
-            Spheres::S3 => &["S3"],
-            Spheres::S2 => &["S2"],
+        let spaces: &[&str] = match m.spaces {
+            Spaces::All => &["S2", "S3", "S5"],
+            Spaces::S3 => &["S3"],
+            Spaces::S2 => &["S2"],
         };
         for space in spaces {
             let build = |n: usize, knots: Option<Vec<f64>>| {
@@ -196,10 +196,10 @@ fn descriptors_match_the_constructions() {
 #[test]
 fn closed_descriptors_match_the_constructions() {
     for m in METHODS {
-        let spaces: &[&str] = match m.spheres {
-            Spheres::All => &["S2", "S3", "S5"],
-            Spheres::S3 => &["S3"],
-            Spheres::S2 => &["S2"],
+        let spaces: &[&str] = match m.spaces {
+            Spaces::All => &["S2", "S3", "S5"],
+            Spaces::S3 => &["S3"],
+            Spaces::S2 => &["S2"],
         };
         for space in spaces {
             let build = |n: usize, knots: Option<Vec<f64>>| {
@@ -226,7 +226,7 @@ fn closed_descriptors_match_the_constructions() {
                 let (joints, seam, start, end) = match &curves[0] {
                     spherekit_scene::BuiltCurve::S2(b) => seam(&*b.curve),
                     spherekit_scene::BuiltCurve::S3(b) => seam(&*b.curve),
-                    spherekit_scene::BuiltCurve::Sn(b) => seam(&*b.curve),
+                    spherekit_scene::BuiltCurve::Sm(b) => seam(&*b.curve),
                 };
                 assert_eq!(
                     report.len(),
@@ -324,7 +324,7 @@ fn seam<P: spherekit::Manifold>(
 fn every_parameter_default_is_accepted() {
     for m in METHODS {
         for p in m.params {
-            let space = if p.spheres == Spheres::S3 || m.spheres == Spheres::S3 {
+            let space = if p.spaces == Spaces::S3 || m.spaces == Spaces::S3 {
                 "S3"
             } else {
                 "S2"

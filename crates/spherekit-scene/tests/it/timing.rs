@@ -342,7 +342,7 @@ fn joints(c: &BuiltCurve) -> Vec<f64> {
     match c {
         BuiltCurve::S2(b) => b.curve.joints().to_vec(),
         BuiltCurve::S3(b) => b.curve.joints().to_vec(),
-        BuiltCurve::Sn(b) => b.curve.joints().to_vec(),
+        BuiltCurve::Sm(b) => b.curve.joints().to_vec(),
     }
 }
 

@@ -8,7 +8,7 @@
 #![allow(dead_code, reason = "each includer uses a part")]
 
 use serde_json::{Value, json};
-use spherekit_scene::{BuiltCurve, METHODS, Method, ParamKind, Scene, Spheres};
+use spherekit_scene::{BuiltCurve, METHODS, Method, ParamKind, Scene, Spaces};
 
 /// `n` distinct points of `space` along a spiral (no two consecutive ones near antipodal).
 pub(crate) fn points(space: &str, n: usize) -> Vec<Vec<f64>> {
@@ -44,10 +44,10 @@ pub(crate) fn loop_points(space: &str, n: usize) -> Vec<Vec<f64>> {
 
 /// The spheres a method is checked on.
 pub(crate) fn spaces(m: &Method) -> &'static [&'static str] {
-    match m.spheres {
-        Spheres::All => &["S2", "S3", "S5"],
-        Spheres::S3 => &["S3"],
-        Spheres::S2 => &["S2"],
+    match m.spaces {
+        Spaces::All => &["S2", "S3", "S5"],
+        Spaces::S3 => &["S3"],
+        Spaces::S2 => &["S2"],
     }
 }
 
@@ -71,7 +71,7 @@ pub(crate) fn scenes(n: usize) -> Vec<(String, Value)> {
                 out.push((format!("{} {space} {field}={value}", m.id), scene));
             }
             for p in m.params {
-                if !p.spheres.contains(
+                if !p.spaces.contains(
                     Scene::from_json(&base.to_string())
                         .map_or(spherekit_scene::Space::S2, |s| s.space),
                 ) {

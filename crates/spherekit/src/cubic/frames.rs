@@ -16,11 +16,11 @@ pub(super) struct Frames {
     data: Vec<f64>,
 }
 
-/// Calls `$body` with `$d` bound to the dimension `$r`. Natively 4 (the span of keys on S³)
-/// has an arm of its own: the callees are inlined by force, so that copy is compiled for the
-/// constant 4, with the short loops over coordinates unrolled. The wasm build has one copy
-/// (the same operations, so the same bits).
-#[cfg(not(target_arch = "wasm32"))]
+/// Calls `$body` with `$d` bound to the dimension `$r`. 4 (the span of keys on S³) has an arm
+/// of its own: the callees are inlined by force (natively), so that copy is compiled for the
+/// constant 4, with the short loops over coordinates unrolled. The `compact` build has one
+/// copy (the same operations, so the same bits).
+#[cfg(not(feature = "compact"))]
 macro_rules! with_dim {
     ($r:expr, |$d:ident| $body:expr) => {
         match $r {
@@ -35,7 +35,7 @@ macro_rules! with_dim {
         }
     };
 }
-#[cfg(target_arch = "wasm32")]
+#[cfg(feature = "compact")]
 macro_rules! with_dim {
     ($r:expr, |$d:ident| $body:expr) => {{
         let $d: usize = $r;

@@ -35,11 +35,11 @@ use crate::knots::Knots;
 use crate::manifold::{Manifold, geodesic_frame_sin_cos, renormalize};
 use crate::math;
 use crate::s3::UnitQuat;
-#[cfg(any(test, target_arch = "wasm32"))]
+#[cfg(any(test, feature = "compact"))]
 use crate::{
     ambient::VecN,
-    recast::{Recast, to_sn},
-    sn::SnPoint,
+    recast::{Recast, to_sm},
+    sm::SmPoint,
 };
 
 use crate::banded::dot;
@@ -76,9 +76,9 @@ pub enum CubicEnd<V> {
     /// time parameter). On S³ see [`CubicEnd::clamped_angular_body`].
     Clamped {
         /// The velocity at the first key, tangent there.
-        start: V,
+        start_velocity: V,
         /// The velocity at the last key, tangent there.
-        end: V,
+        end_velocity: V,
     },
     /// scipy's `RotationSpline` end condition: the velocity at the first key is the mean
     /// velocity of the first segment, `Log_{p₀}(p₁)/h₀`, and at the last key that of the last
@@ -92,8 +92,8 @@ impl CubicEnd<DVec4> {
     #[must_use]
     pub fn clamped_angular_body(first: UnitQuat, start: DVec3, last: UnitQuat, end: DVec3) -> Self {
         Self::Clamped {
-            start: crate::s3::velocity_from_angular_body(first, start),
-            end: crate::s3::velocity_from_angular_body(last, end),
+            start_velocity: crate::s3::velocity_from_angular_body(first, start),
+            end_velocity: crate::s3::velocity_from_angular_body(last, end),
         }
     }
 
@@ -102,8 +102,8 @@ impl CubicEnd<DVec4> {
     #[must_use]
     pub fn clamped_angular(first: UnitQuat, start: DVec3, last: UnitQuat, end: DVec3) -> Self {
         Self::Clamped {
-            start: crate::s3::velocity_from_angular(first, start),
-            end: crate::s3::velocity_from_angular(last, end),
+            start_velocity: crate::s3::velocity_from_angular(first, start),
+            end_velocity: crate::s3::velocity_from_angular(last, end),
         }
     }
 }
@@ -149,9 +149,17 @@ impl CubicSpline<UnitQuat> {
         let last = keys.last().copied();
         crate::unflip(&mut keys);
         let end = match (end, last, keys.last()) {
-            (CubicEnd::Clamped { start, end }, Some(given), Some(&now)) if given != now => {
-                CubicEnd::Clamped { start, end: -end }
-            }
+            (
+                CubicEnd::Clamped {
+                    start_velocity,
+                    end_velocity,
+                },
+                Some(given),
+                Some(&now),
+            ) if given != now => CubicEnd::Clamped {
+                start_velocity,
+                end_velocity: -end_velocity,
+            },
             (end, ..) => end,
         };
         Self::try_new(keys, knots, end, false)
@@ -257,7 +265,7 @@ impl<P: Manifold> CubicSpline<P> {
     ///
     /// - [`SplineError::TooFewPoints`] for fewer than 2 points (3 when `closed`);
     /// - [`SplineError::InvalidPoint`] with [`PointError::WrongDimension`] for points of spheres of
-    ///   different dimensions ([`SnPoint`](crate::SnPoint));
+    ///   different dimensions ([`SmPoint`](crate::SmPoint));
     /// - [`SplineError::Antipodal`] for antipodal consecutive points and
     ///   [`SplineError::AntipodalClosing`] for an antipodal last and first point when `closed`;
     /// - the knot errors of [`Knots::or_uniform`] (non-finite, not increasing, spacing, and
@@ -275,12 +283,12 @@ impl<P: Manifold> CubicSpline<P> {
         end: CubicEnd<P::Vector>,
         closed: bool,
     ) -> Result<Self, SplineError> {
-        // Natively on `P` itself; in the wasm build once on S^m for every point type
-        // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sn`).
-        #[cfg(not(target_arch = "wasm32"))]
+        // On `P` itself; with the `compact` feature once on S^m for every point type
+        // ([`crate::recast`]; the same bits, `tests::the_construction_gives_the_same_bits_on_sm`).
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, end, closed, None);
-        #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, knots, end, closed, None);
+        #[cfg(feature = "compact")]
+        return Self::construct_on_sm(points, knots, end, closed, None);
     }
 
     /// The cubic Hermite spline on the sphere: through `points` at the times `knots` (as
@@ -336,40 +344,43 @@ impl<P: Manifold> CubicSpline<P> {
     ) -> Result<Self, SplineError> {
         let end = match (closed, velocities.first(), velocities.last()) {
             (false, Some(start), Some(end)) => CubicEnd::Clamped {
-                start: start.clone(),
-                end: end.clone(),
+                start_velocity: start.clone(),
+                end_velocity: end.clone(),
             },
             _ => CubicEnd::Natural,
         };
-        #[cfg(not(target_arch = "wasm32"))]
+        #[cfg(not(feature = "compact"))]
         return Self::construct(points, knots, end, closed, Some(velocities));
-        #[cfg(target_arch = "wasm32")]
-        return Self::construct_on_sn(points, knots, end, closed, Some(velocities));
+        #[cfg(feature = "compact")]
+        return Self::construct_on_sm(points, knots, end, closed, Some(velocities));
     }
 
     /// [`construct`](Self::construct) on the keys as points of S^m, the built curve converted
     /// back (the keys and the end condition are kept as given: the conversion copies
     /// coordinates).
-    #[cfg(any(test, target_arch = "wasm32"))]
-    fn construct_on_sn(
+    #[cfg(any(test, feature = "compact"))]
+    fn construct_on_sm(
         points: Vec<P>,
         knots: Option<Vec<f64>>,
         end: CubicEnd<P::Vector>,
         closed: bool,
         given: Option<Vec<P::Vector>>,
     ) -> Result<Self, SplineError> {
-        let sn = points.iter().map(to_sn).collect();
+        let sm = points.iter().map(to_sm).collect();
         let vector = |v: &P::Vector| VecN::new(v.to_vec());
         let given = given.map(|g| g.iter().map(vector).collect());
-        let end_sn = match &end {
+        let end_sm = match &end {
             CubicEnd::Natural => CubicEnd::Natural,
             CubicEnd::Scipy => CubicEnd::Scipy,
-            CubicEnd::Clamped { start, end } => CubicEnd::Clamped {
-                start: vector(start),
-                end: vector(end),
+            CubicEnd::Clamped {
+                start_velocity,
+                end_velocity,
+            } => CubicEnd::Clamped {
+                start_velocity: vector(start_velocity),
+                end_velocity: vector(end_velocity),
             },
         };
-        let c = CubicSpline::<SnPoint>::construct(sn, knots, end_sn, closed, given)?;
+        let c = CubicSpline::<SmPoint>::construct(sm, knots, end_sm, closed, given)?;
         let to = Recast::to(&points[0]);
         Ok(Self {
             points,
@@ -465,9 +476,12 @@ impl<P: Manifold> CubicSpline<P> {
             None => None,
         };
         let clamps = match &end {
-            CubicEnd::Clamped { start, end } => Some((
-                check_velocity(&points[0], start, true)?,
-                check_velocity(&points[n - 1], end, false)?,
+            CubicEnd::Clamped {
+                start_velocity,
+                end_velocity,
+            } => Some((
+                check_velocity(&points[0], start_velocity, true)?,
+                check_velocity(&points[n - 1], end_velocity, false)?,
             )),
             _ => None,
         };

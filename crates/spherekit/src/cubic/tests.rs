@@ -9,11 +9,11 @@ use crate::banded::{invert, mat_mul};
 use crate::recast::keys;
 use glam::DMat3;
 
-/// The wasm build constructs on S^m and converts back; every field (and every error) must
+/// The `compact` build constructs on S^m and converts back; every field (and every error) must
 /// be what the construction on the point type itself gives, bit for bit (`{:?}` prints
 /// each `f64` in the shortest form that reads back to the same bits).
 #[test]
-fn the_construction_gives_the_same_bits_on_sn() {
+fn the_construction_gives_the_same_bits_on_sm() {
     fn check<P: Manifold>(points: &[P]) -> usize {
         let mut built = 0;
         let n = points.len();
@@ -31,12 +31,12 @@ fn the_construction_gives_the_same_bits_on_sn() {
             CubicEnd::Natural,
             CubicEnd::Scipy,
             CubicEnd::Clamped {
-                start: tangent(&points[0], 0.3),
-                end: tangent(&points[n - 1], -0.7),
+                start_velocity: tangent(&points[0], 0.3),
+                end_velocity: tangent(&points[n - 1], -0.7),
             },
             CubicEnd::Clamped {
-                start: points[0].to_vector(),
-                end: tangent(&points[n - 1], 0.2),
+                start_velocity: points[0].to_vector(),
+                end_velocity: tangent(&points[n - 1], 0.2),
             },
         ];
         for closed in [false, true] {
@@ -53,21 +53,43 @@ fn the_construction_gives_the_same_bits_on_sn() {
                         closed,
                         None,
                     );
-                    let on_sn = CubicSpline::construct_on_sn(
+                    let on_sm = CubicSpline::construct_on_sm(
                         points.to_vec(),
                         knots.clone(),
                         end.clone(),
                         closed,
                         None,
                     );
-                    built += keys::same_bits(&native, &on_sn, &points);
+                    built += keys::same_bits(&native, &on_sm, &points);
                 }
+                // Hermite: a velocity given at every key.
+                let given: Vec<P::Vector> = points
+                    .iter()
+                    .enumerate()
+                    .map(|(k, p)| tangent(p, 0.2 * (k as f64 + 1.0)))
+                    .collect();
+                let end = CubicEnd::Natural;
+                let native = CubicSpline::construct(
+                    points.to_vec(),
+                    knots.clone(),
+                    end.clone(),
+                    closed,
+                    Some(given.clone()),
+                );
+                let on_sm = CubicSpline::construct_on_sm(
+                    points.to_vec(),
+                    knots.clone(),
+                    end,
+                    closed,
+                    Some(given),
+                );
+                built += keys::same_bits(&native, &on_sm, &points);
             }
         }
         built
     }
     let built = keys::built(check, check);
-    assert!(built > 40, "{built} curves built");
+    assert!(built > 50, "{built} curves built");
 }
 
 /// A random system of continuity equations: `n` keys, tangent dimension `m`, segment

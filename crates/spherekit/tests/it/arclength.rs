@@ -15,7 +15,7 @@ use crate::support::{Rng, check_derivatives_at, interior_parameters};
 use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, ArcLength, ArcLengthError, Bezier, CatmullRom, Curve, GeodesicSpline, Manifold,
-    S2Point, Side, SnPoint, Squad, UnitQuat, angular_velocity_acceleration,
+    S2Point, Side, SmPoint, Squad, UnitQuat, angular_velocity_acceleration,
 };
 
 /// Composite Simpson of the speed over `[a, b]` with `n` (even) intervals per piece of the
@@ -61,8 +61,8 @@ fn curve_s3(rng: &mut Rng) -> Squad {
     Squad::try_new(rng.chain(6, 0.9), Some(rng.knots(5))).unwrap()
 }
 
-fn curve_s5(rng: &mut Rng) -> CatmullRom<SnPoint> {
-    CatmullRom::try_new(rng.walk_sn(6, 5, 0.5), None).unwrap()
+fn curve_s5(rng: &mut Rng) -> CatmullRom<SmPoint> {
+    CatmullRom::try_new(rng.walk_sm(6, 5, 0.5), None).unwrap()
 }
 
 /// Equal steps in `s` cover equal lengths of the curve, measured by Simpson's rule on the

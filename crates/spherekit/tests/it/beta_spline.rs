@@ -6,7 +6,7 @@
 
 use spherekit::glam::{DVec3, DVec4};
 use spherekit::{
-    Ambient, BetaParams, BetaSolver, BetaSpline, Curve, Manifold, S2Point, Side, SnPoint,
+    Ambient, BetaParams, BetaSolver, BetaSpline, Curve, Manifold, S2Point, Side, SmPoint,
     SolveError, SplineError, UnitQuat,
 };
 
@@ -599,9 +599,9 @@ fn random_data_on_s2_s3_and_s5() {
         check_jets(&c);
         let _: DVec4 = c.jet(0.5).velocity;
         // S⁵
-        let data: Vec<SnPoint> = walk(&mut rng, n, 6, 0.2, 0.9)
+        let data: Vec<SmPoint> = walk(&mut rng, n, 6, 0.2, 0.9)
             .into_iter()
-            .map(|v| SnPoint::try_new(v).unwrap())
+            .map(|v| SmPoint::try_new(v).unwrap())
             .collect();
         let c = BetaSpline::try_new(data.clone(), &params).unwrap();
         assert!(interpolation_error(&c, &data) < 1e-12, "S⁵ trial {trial}");
@@ -615,8 +615,8 @@ fn random_data_on_s2_s3_and_s5() {
 fn low_rank_data_in_high_dimension() {
     let mut rng = Rng(5);
     let base = walk(&mut rng, 5, 3, 0.3, 0.8);
-    let embed = |v: &Vec<f64>| SnPoint::try_new(vec![0.0, v[0], 0.0, v[1], v[2], 0.0]).unwrap();
-    let data: Vec<SnPoint> = base.iter().map(embed).collect();
+    let embed = |v: &Vec<f64>| SmPoint::try_new(vec![0.0, v[0], 0.0, v[1], v[2], 0.0]).unwrap();
+    let data: Vec<SmPoint> = base.iter().map(embed).collect();
     let c = BetaSpline::try_new(data.clone(), &BetaParams::default()).unwrap();
     let reference = BetaSpline::try_new(s2(&base), &BetaParams::default()).unwrap();
     assert!(interpolation_error(&c, &data) < 1e-12, "interpolates");
@@ -974,9 +974,9 @@ fn solver_names() {
 #[test]
 fn circle_s1() {
     let alpha: [f64; 5] = [0.2, 0.9, 1.3, 2.2, 2.6];
-    let data: Vec<SnPoint> = alpha
+    let data: Vec<SmPoint> = alpha
         .iter()
-        .map(|a| SnPoint::try_new(vec![a.cos(), a.sin()]).unwrap())
+        .map(|a| SmPoint::try_new(vec![a.cos(), a.sin()]).unwrap())
         .collect();
     let c = BetaSpline::try_new(data.clone(), &BetaParams::default()).unwrap();
     assert!(interpolation_error(&c, &data) < 1e-12, "interpolates");
@@ -1046,8 +1046,8 @@ fn extreme_parameters_never_give_nan() {
 #[test]
 fn mixed_dimensions_are_rejected() {
     let data = vec![
-        SnPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(),
-        SnPoint::try_new(vec![0.0, 1.0, 0.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![0.0, 1.0, 0.0, 0.0]).unwrap(),
     ];
     assert!(
         matches!(

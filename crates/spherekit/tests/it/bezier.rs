@@ -7,7 +7,7 @@
 
 use spherekit::glam::DVec3;
 use spherekit::{
-    Ambient, Bezier, Curve, GeodesicSpline, Jet, Manifold, S2Point, ScalarJet, SnPoint,
+    Ambient, Bezier, Curve, GeodesicSpline, Jet, Manifold, S2Point, ScalarJet, SmPoint,
     SplineError, UnitQuat, cubic_jet, de_casteljau, de_casteljau_jet, slerp_jet,
 };
 
@@ -76,7 +76,7 @@ fn s3_all_degrees() {
 fn sn_all_degrees() {
     let mut g = Rng(3);
     for (n, m) in [(1, 1), (2, 4), (3, 5), (4, 7)] {
-        check_basic(g.walk_sn(n + 1, m, 0.7));
+        check_basic(g.walk_sm(n + 1, m, 0.7));
     }
 }
 
@@ -158,7 +158,7 @@ fn rotation_equivariance() {
         );
     }
     // S^m: a reflection (orientation reversing).
-    let ctrl = g.walk_sn(4, 5, 0.7);
+    let ctrl = g.walk_sm(4, 5, 0.7);
     let nrm = g.vec(6);
     let c = Bezier::try_new(ctrl.clone()).unwrap();
     let rc = Bezier::try_new(ctrl.iter().map(|p| reflect(&nrm, p)).collect()).unwrap();
@@ -166,7 +166,7 @@ fn rotation_equivariance() {
         let t = k as f64 / 10.0;
         assert!(
             reflect(&nrm, &c.eval(t)).dist(&rc.eval(t)) < 1e-14,
-            "Sn reflection"
+            "S^m reflection"
         );
     }
 }
@@ -270,8 +270,8 @@ fn errors() {
         Bezier::try_new(vec![q, -q]).unwrap_err(),
         SplineError::Antipodal { index: 0 }
     );
-    let p = SnPoint::try_new(vec![1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
-    let mp = SnPoint::try_new(vec![-1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    let p = SmPoint::try_new(vec![1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    let mp = SmPoint::try_new(vec![-1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
     assert!(Bezier::try_new(vec![p, mp]).is_err(), "S^m antipodal");
 }
 

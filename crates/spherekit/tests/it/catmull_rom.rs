@@ -76,7 +76,7 @@ fn s2_intrinsic_rule() {
 #[test]
 fn sn_intrinsic_rule() {
     for (seed, knots) in [(22, None), (23, Some(NONUNIFORM.to_vec()))] {
-        let pts = Rng(seed).walk_sn(8, 5, 0.6);
+        let pts = Rng(seed).walk_sm(8, 5, 0.6);
         let c = CatmullRom::try_new(pts.clone(), knots).unwrap();
         let e = ext(c.joints());
         check(&c, |i| {

@@ -62,7 +62,7 @@ fn interpolates_and_is_c1_on_every_sphere() {
     let mut keys = rng.walk_quat(7, 0.6);
     unflip(&mut keys);
     check(&CatmullRomNlerp::try_new(keys, None).unwrap());
-    check(&CatmullRomNlerp::try_new(rng.walk_sn(6, 5, 0.6), None).unwrap());
+    check(&CatmullRomNlerp::try_new(rng.walk_sm(6, 5, 0.6), None).unwrap());
 }
 
 /// On keys equally spaced along one great circle the spherical Catmull-Rom runs at constant

@@ -41,7 +41,7 @@ fn random_configurations() {
         }
         let mut q = g.walk_quat(n, step);
         unflip(&mut q);
-        let sn = g.walk_sn(n, 6, step);
+        let sn = g.walk_sm(n, 6, step);
         // Antipodal neighbours are possible only by chance with step 2.0; skip those.
         if let Ok(c) = Bezier::try_new(s2.clone()) {
             check_finite_unit(&c);

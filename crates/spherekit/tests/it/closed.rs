@@ -20,7 +20,7 @@ use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSolver, BetaSpline, BsplineKim, CatmullRom,
     CatmullRomNlerp, CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, Curve, GammaSpline,
-    Gammas, GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad,
+    Gammas, GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SmPoint, SplineError, Squad,
     UnitQuat, continuity,
 };
 
@@ -138,11 +138,11 @@ fn ring_s3(rng: &mut Rng, m: usize) -> Vec<UnitQuat> {
 }
 
 /// `m` points of S⁵ around a loop.
-fn ring_s5(rng: &mut Rng, m: usize) -> Vec<SnPoint> {
+fn ring_s5(rng: &mut Rng, m: usize) -> Vec<SmPoint> {
     (0..m)
         .map(|k| {
             let a = TAU * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
-            SnPoint::try_new(vec![
+            SmPoint::try_new(vec![
                 a.cos(),
                 a.sin(),
                 rng.range(0.5, 0.9),

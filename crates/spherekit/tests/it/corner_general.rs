@@ -85,7 +85,7 @@ fn per_corner_cuts_keep_endpoints_and_are_cn_on_every_sphere() {
         )
         .unwrap();
         check_general(&c, &keys, &cuts, n);
-        let pts = rng.walk_sn(5, 4, 0.8);
+        let pts = rng.walk_sm(5, 4, 0.8);
         let per: Vec<f64> = (0..3).map(|_| rng.range(0.05, 0.5)).collect();
         let c = CornerBlend::try_with(
             pts.clone(),

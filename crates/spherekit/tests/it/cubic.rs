@@ -17,7 +17,7 @@
 
 use spherekit::glam::{DMat3, DVec3, DVec4};
 use spherekit::{
-    Ambient, CubicEnd, CubicSpline, Curve, Manifold, S2Point, Side, SnPoint, SplineError, UnitQuat,
+    Ambient, CubicEnd, CubicSpline, Curve, Manifold, S2Point, Side, SmPoint, SplineError, UnitQuat,
     VecN, angular_velocity_acceleration_body, continuity, unflip,
 };
 
@@ -108,7 +108,7 @@ fn interpolates_and_is_c2_on_s2_s3_s5() {
             &CubicSpline::try_new(q.clone(), knots.clone(), qe.clone(), false).unwrap(),
             &q,
         );
-        let s = rng.walk_sn(6, 5, 0.5);
+        let s = rng.walk_sm(6, 5, 0.5);
         let se = match end {
             CubicEnd::Natural => CubicEnd::Natural,
             _ => CubicEnd::Scipy,
@@ -159,7 +159,7 @@ fn point_velocity_is_the_jet_without_acceleration() {
     check_point_velocity(
         &CubicSpline::try_new(q, Some(closed_knots), CubicEnd::Natural, true).unwrap(),
     );
-    let s = rng.walk_sn(6, 5, 0.5);
+    let s = rng.walk_sm(6, 5, 0.5);
     check_point_velocity(&CubicSpline::try_new(s, knots, CubicEnd::Natural, false).unwrap());
 }
 
@@ -178,7 +178,7 @@ fn closed_curves_are_c2_at_the_seam() {
         &CubicSpline::try_new(q.clone(), Some(k.clone()), CubicEnd::Natural, true).unwrap(),
         &q,
     );
-    let s = rng.walk_sn(6, 5, 0.6);
+    let s = rng.walk_sm(6, 5, 0.6);
     check_curve(
         &CubicSpline::try_new(s.clone(), Some(k), CubicEnd::Natural, true).unwrap(),
         &s,
@@ -297,7 +297,7 @@ fn natural_ends_have_zero_tangential_acceleration() {
     let c = CubicSpline::try_new(p, k.clone(), CubicEnd::Natural, false).unwrap();
     let q = rng.chain(6, 1.2);
     let cq = CubicSpline::try_new(q, k.clone(), CubicEnd::Natural, false).unwrap();
-    let s = rng.walk_sn(6, 5, 0.5);
+    let s = rng.walk_sm(6, 5, 0.5);
     let cs = CubicSpline::try_new(s, k, CubicEnd::Natural, false).unwrap();
     for (t, side) in [(0.0, Side::Right), (5.5, Side::Left)] {
         assert!(tangential_acceleration(&c, t, side) <= 1e-12, "S² at {t}");
@@ -320,7 +320,10 @@ fn clamped_ends_have_the_given_velocity() {
     let c = CubicSpline::try_new(
         p.clone(),
         k.clone(),
-        CubicEnd::Clamped { start: v0, end: v1 },
+        CubicEnd::Clamped {
+            start_velocity: v0,
+            end_velocity: v1,
+        },
         false,
     )
     .unwrap();
@@ -344,7 +347,7 @@ fn clamped_ends_have_the_given_velocity() {
     let (ws, _) = spherekit::angular_velocity_acceleration(j.point, j.velocity, j.acceleration);
     assert!((ws - w0).length() <= 1e-12, "space rate");
     // S⁵.
-    let s = rng.walk_sn(6, 5, 0.5);
+    let s = rng.walk_sm(6, 5, 0.5);
     let (a, b) = (
         s[0].project_tangent(&VecN::new(rng.vec(6))),
         s[5].project_tangent(&VecN::new(rng.vec(6))),
@@ -353,8 +356,8 @@ fn clamped_ends_have_the_given_velocity() {
         s.clone(),
         k,
         CubicEnd::Clamped {
-            start: a.clone(),
-            end: b.clone(),
+            start_velocity: a.clone(),
+            end_velocity: b.clone(),
         },
         false,
     )
@@ -368,7 +371,16 @@ fn clamped_ends_have_the_given_velocity() {
 fn clamped_velocity_errors_name_the_end() {
     let p = vec![S2Point::X, S2Point::Y, S2Point::Z];
     let bad = |start: DVec3, end: DVec3| {
-        CubicSpline::try_new(p.clone(), None, CubicEnd::Clamped { start, end }, false).unwrap_err()
+        CubicSpline::try_new(
+            p.clone(),
+            None,
+            CubicEnd::Clamped {
+                start_velocity: start,
+                end_velocity: end,
+            },
+            false,
+        )
+        .unwrap_err()
     };
     let e = bad(DVec3::new(0.1, 1.0, 0.0), DVec3::X);
     assert_eq!(
@@ -390,8 +402,8 @@ fn clamped_velocity_errors_name_the_end() {
         p.clone(),
         None,
         CubicEnd::Clamped {
-            start: DVec3::new(1e-12, 1.0, 0.0),
-            end: DVec3::X,
+            start_velocity: DVec3::new(1e-12, 1.0, 0.0),
+            end_velocity: DVec3::X,
         },
         false,
     )
@@ -399,15 +411,15 @@ fn clamped_velocity_errors_name_the_end() {
     assert!(c.jet(0.0).velocity.x.abs() < 1e-300 + 1e-20);
     // S^m: a velocity of the wrong dimension.
     let s = vec![
-        SnPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(),
-        SnPoint::try_new(vec![0.0, 1.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![1.0, 0.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![0.0, 1.0, 0.0]).unwrap(),
     ];
     let e = CubicSpline::try_new(
         s,
         None,
         CubicEnd::Clamped {
-            start: VecN::new(vec![0.0, 1.0]),
-            end: VecN::new(vec![1.0, 0.0, 0.0]),
+            start_velocity: VecN::new(vec![0.0, 1.0]),
+            end_velocity: VecN::new(vec![1.0, 0.0, 0.0]),
         },
         false,
     )
@@ -614,9 +626,9 @@ fn rotation_equivariance() {
         assert!(d <= 1e-13, "S³ at {t}: {d:e}");
     }
     // S⁵: a reflection.
-    let s = rng.walk_sn(6, 5, 0.5);
+    let s = rng.walk_sm(6, 5, 0.5);
     let nrm = rng.vec(6);
-    let ms: Vec<SnPoint> = s.iter().map(|x| support::reflect(&nrm, x)).collect();
+    let ms: Vec<SmPoint> = s.iter().map(|x| support::reflect(&nrm, x)).collect();
     let a = CubicSpline::try_new(s, k.clone(), CubicEnd::Natural, false).unwrap();
     let b = CubicSpline::try_new(ms, k, CubicEnd::Natural, false).unwrap();
     for &t in &ts {

@@ -12,7 +12,7 @@
 
 use spherekit::glam::DVec3;
 use spherekit::{
-    Curve, GeodesicSpline, Knots, Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError,
+    Curve, GeodesicSpline, Knots, Manifold, NlerpSpline, S2Point, Side, SmPoint, SplineError,
     UnitQuat,
 };
 
@@ -54,7 +54,7 @@ fn geodesic_on_every_sphere() {
     let mut q: Vec<UnitQuat> = (0..5).map(|_| rng.quat()).collect();
     spherekit::unflip(&mut q);
     check_curve(&GeodesicSpline::try_new(q.clone(), None).unwrap(), &q);
-    let s: Vec<SnPoint> = (0..4).map(|_| rng.sn(6)).collect();
+    let s: Vec<SmPoint> = (0..4).map(|_| rng.sn(6)).collect();
     check_curve(&GeodesicSpline::try_new(s.clone(), None).unwrap(), &s);
 }
 
@@ -67,7 +67,7 @@ fn nlerp_on_every_sphere() {
     check_curve(&NlerpSpline::try_new(p.clone(), Some(knots)).unwrap(), &p);
     let q: Vec<UnitQuat> = (0..5).map(|_| rng.quat()).collect();
     check_curve(&NlerpSpline::try_new(q.clone(), None).unwrap(), &q);
-    let s: Vec<SnPoint> = (0..4).map(|_| rng.sn(3)).collect();
+    let s: Vec<SmPoint> = (0..4).map(|_| rng.sn(3)).collect();
     check_curve(&NlerpSpline::try_new(s.clone(), None).unwrap(), &s);
 }
 

@@ -70,7 +70,7 @@ fn hermite_interpolates_keys_and_velocities_on_every_sphere() {
             let keys = rng.walk_quat(n, 0.6);
             let vel = velocities(&mut rng, &keys, 0.7);
             check(keys, vel, knots.clone(), closed);
-            let keys = rng.walk_sn(n, 5, 0.7);
+            let keys = rng.walk_sm(n, 5, 0.7);
             let vel = velocities(&mut rng, &keys, 0.9);
             check(keys, vel, knots, closed);
         }

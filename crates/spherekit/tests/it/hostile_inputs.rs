@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
 //! The point layer under hostile input: every public constructor and operation of `UnitQuat`,
-//! `S2Point`, `SnPoint`, the `Manifold` trait, the rotation conversions and the angular-velocity
+//! `S2Point`, `SmPoint`, the `Manifold` trait, the rotation conversions and the angular-velocity
 //! helpers, fed NaN, ±∞, 1e300, `f64::MAX`, 0, 1e-300, subnormals and antipodal pairs. Each
 //! either returns a finite (and, for points, unit) result or a typed error; none panics (these
 //! tests run with debug assertions on) and none returns a NaN it did not receive.
@@ -21,7 +21,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use arbtest::arbitrary::{Result as ArbResult, Unstructured};
 use spherekit::glam::{DMat3, DQuat, DVec3, DVec4};
 use spherekit::{
-    Ambient, Jet, Manifold, PointError, RotationError, S2Point, ScalarJet, SnPoint, UnitQuat, VecN,
+    Ambient, Jet, Manifold, PointError, RotationError, S2Point, ScalarJet, SmPoint, UnitQuat, VecN,
     angular_velocity_acceleration, angular_velocity_acceleration_body, exp_so3, rodrigues_compose,
     rotation_derivative, rotation_matrix_from_rodrigues, skew, slerp_jet, unflip,
     velocity_from_angular, velocity_from_angular_body,
@@ -94,14 +94,14 @@ fn quats() -> Vec<UnitQuat> {
     ]
 }
 
-fn sn_points() -> Vec<SnPoint> {
+fn sn_points() -> Vec<SmPoint> {
     vec![
-        SnPoint::try_new(vec![1.0, 0.0]).unwrap(),
-        SnPoint::try_new(vec![-1.0, 0.0]).unwrap(),
-        SnPoint::try_new(vec![0.0, 1.0, 0.0, 0.0, 0.0]).unwrap(),
-        SnPoint::try_new(vec![0.0, -1.0, 0.0, 0.0, 0.0]).unwrap(),
-        SnPoint::try_new(vec![1e-300, 0.0, 2e-300, 0.0]).unwrap(),
-        SnPoint::try_new(vec![f64::MAX, -f64::MAX, f64::MAX, 1.0, 0.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![1.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![-1.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![0.0, 1.0, 0.0, 0.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![0.0, -1.0, 0.0, 0.0, 0.0]).unwrap(),
+        SmPoint::try_new(vec![1e-300, 0.0, 2e-300, 0.0]).unwrap(),
+        SmPoint::try_new(vec![f64::MAX, -f64::MAX, f64::MAX, 1.0, 0.0, 0.0]).unwrap(),
     ]
 }
 
@@ -198,8 +198,8 @@ fn constructors_give_unit_points_or_typed_errors() {
             }
             Err(e) => assert_eq!(Some(e), expect_err, "{v:?}"),
         }
-        match SnPoint::try_new(v.to_array().to_vec()) {
-            Ok(p) => assert_unit_point(&p, "SnPoint::try_new"),
+        match SmPoint::try_new(v.to_array().to_vec()) {
+            Ok(p) => assert_unit_point(&p, "SmPoint::try_new"),
             Err(e) => assert_eq!(Some(e), expect_err, "{v:?}"),
         }
     }
@@ -220,7 +220,7 @@ fn constructors_give_unit_points_or_typed_errors() {
         }
     }
     assert_eq!(
-        SnPoint::try_new(vec![f64::NAN]),
+        SmPoint::try_new(vec![f64::NAN]),
         Err(PointError::WrongDimension {
             expected: 2,
             got: 1
@@ -505,8 +505,8 @@ fn every_manifold_operation_on_hostile_pairs() {
 
 #[test]
 fn sn_points_of_different_dimensions_meet_in_the_larger_sphere() {
-    let p = SnPoint::try_new(vec![1.0, 0.0]).unwrap();
-    let q = SnPoint::try_new(vec![0.0, 0.0, 0.0, 1.0]).unwrap();
+    let p = SmPoint::try_new(vec![1.0, 0.0]).unwrap();
+    let q = SmPoint::try_new(vec![0.0, 0.0, 0.0, 1.0]).unwrap();
     assert!((p.dist(&q) - FRAC_PI_2).abs() < 1e-15);
     let m = p.slerp(&q, 0.5);
     assert_eq!(m.dim(), 3);
@@ -815,11 +815,11 @@ fn random_inputs_of_every_magnitude_never_panic_or_return_nan() {
         let dim = u.int_in_range(2_usize..=6)?;
         let coords: Vec<f64> = (0..dim).map(|_| any_f64(u)).collect::<ArbResult<_>>()?;
         let sp =
-            SnPoint::try_new(coords).unwrap_or_else(|_| SnPoint::try_new(vec![1.0, 0.0]).unwrap());
+            SmPoint::try_new(coords).unwrap_or_else(|_| SmPoint::try_new(vec![1.0, 0.0]).unwrap());
         let dim2 = u.int_in_range(2_usize..=6)?;
         let coords: Vec<f64> = (0..dim2).map(|_| finite_f64(u)).collect::<ArbResult<_>>()?;
         let sq =
-            SnPoint::try_new(coords).unwrap_or_else(|_| SnPoint::try_new(vec![0.0, 1.0]).unwrap());
+            SmPoint::try_new(coords).unwrap_or_else(|_| SmPoint::try_new(vec![0.0, 1.0]).unwrap());
         let tangent: Vec<f64> = (0..dim).map(|_| any_f64(u)).collect::<ArbResult<_>>()?;
         check_manifold_ops(&sp, &sq, &VecN::new(tangent), any_f64(u)?);
         Ok(())

@@ -21,7 +21,7 @@ use spherekit::glam::{DQuat, DVec3};
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSpline, BsplineKim, CatmullRom, CornerBlend,
     CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
-    Manifold, NlerpSpline, S2Point, Side, SnPoint, SplineError, Squad, UnitQuat,
+    Manifold, NlerpSpline, S2Point, Side, SmPoint, SplineError, Squad, UnitQuat,
 };
 
 use crate::support::Rng;
@@ -55,7 +55,7 @@ fn walk_s3(seed: u64, n: usize) -> Vec<UnitQuat> {
 }
 
 /// A random walk on S^m with steps uniform in [0.05, 0.5) rad.
-fn walk_sn(seed: u64, n: usize, m: usize) -> Vec<SnPoint> {
+fn walk_sm(seed: u64, n: usize, m: usize) -> Vec<SmPoint> {
     let mut g = Rng(seed);
     let mut p = g.sn(m);
     let mut out = vec![p.clone()];
@@ -153,7 +153,7 @@ fn check<C: Curve>(curve: &C, keys: &[C::Point], claims: &Claims) {
 
 /// Cⁿ of an arc-blend at sampled joints from its exact derivatives of every order up to `n`.
 fn check_arc_blend_cn<P: Manifold>(curve: &ArcBlend<P>, what: &str) {
-    let n = curve.order();
+    let n = curve.smoothness();
     let knots = curve.knots();
     for i in spread(1, knots.len() - 2, JOINT_SAMPLES) {
         let t = knots[i];
@@ -304,7 +304,7 @@ fn hundred_thousand_keys_beta() {
 
 #[test]
 fn arc_blend_long_sequence_on_s5() {
-    let keys = walk_sn(5, 20_000, 5);
+    let keys = walk_sm(5, 20_000, 5);
     let c = ArcBlend::try_new(keys.clone(), 3).unwrap();
     check(
         &c,

@@ -13,7 +13,7 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
-use spherekit::{Ambient, Manifold, PointError, S2Point, SnPoint, UnitQuat};
+use spherekit::{Ambient, Manifold, PointError, S2Point, SmPoint, UnitQuat};
 
 use crate::support::{Rng, assert_close, assert_unit};
 
@@ -37,14 +37,14 @@ fn constructors_normalise_and_reject_bad_input() {
     assert_unit(&tiny);
     assert_eq!(UnitQuat::from_wxyz([0.0; 4]), Err(PointError::ZeroLength));
     assert_eq!(
-        SnPoint::try_new(vec![1.0]),
+        SmPoint::try_new(vec![1.0]),
         Err(PointError::WrongDimension {
             expected: 2,
             got: 1
         })
     );
     assert_eq!(
-        SnPoint::try_new(vec![0.0, 0.0, 0.0]),
+        SmPoint::try_new(vec![0.0, 0.0, 0.0]),
         Err(PointError::ZeroLength)
     );
 }

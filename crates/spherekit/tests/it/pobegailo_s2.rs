@@ -511,7 +511,7 @@ fn arc_blend_interpolates_and_is_cn() {
         for _ in 0..5 {
             let pts = random_walk(&mut rng, 7);
             let c = ArcBlend::try_new(pts.clone(), n).unwrap();
-            assert_eq!(c.order(), n, "order");
+            assert_eq!(c.smoothness(), n, "smoothness");
             for (t, q) in c.knots().iter().zip(&pts) {
                 assert!(c.eval(*t).dist(q) < 1e-14, "interpolation");
                 assert!(c.jet_at(*t, Side::Left).point.dist(q) < 1e-14, "left limit");
@@ -651,7 +651,10 @@ fn arc_blend_bad_input() {
     for n in [0, 11] {
         assert!(matches!(
             ArcBlend::try_new(pts.clone(), n),
-            Err(SplineError::InvalidParameter { name: "order", .. })
+            Err(SplineError::InvalidParameter {
+                name: "smoothness",
+                ..
+            })
         ));
     }
     let mut dup = pts.clone();
@@ -851,7 +854,10 @@ fn corner_blend_bad_input() {
     }
     assert!(matches!(
         CornerBlend::try_new(pts.clone(), 11, 0.25),
-        Err(SplineError::InvalidParameter { name: "order", .. })
+        Err(SplineError::InvalidParameter {
+            name: "smoothness",
+            ..
+        })
     ));
     let mut dup = pts.clone();
     dup[3] = dup[2];

@@ -543,7 +543,10 @@ fn orientation_corner_equivariance_and_bad_input() {
     }
     assert!(matches!(
         CornerBlendS3::try_new(pts.clone(), 0, 0.25),
-        Err(SplineError::InvalidParameter { name: "order", .. })
+        Err(SplineError::InvalidParameter {
+            name: "smoothness",
+            ..
+        })
     ));
     assert!(matches!(
         CornerBlendS3::try_new(pts.clone(), 2, 0.75),

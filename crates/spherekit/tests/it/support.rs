@@ -14,7 +14,7 @@
 )]
 
 use spherekit::glam::{DMat3, DQuat, DVec3, DVec4};
-use spherekit::{Ambient, Curve, Manifold, S2Point, Side, SnPoint, UnitQuat, VecN};
+use spherekit::{Ambient, Curve, Manifold, S2Point, Side, SmPoint, UnitQuat, VecN};
 
 /// Relative tolerance for derivatives against central differences.
 pub const FD_TOLERANCE: f64 = 1e-6;
@@ -87,8 +87,8 @@ impl Rng {
         UnitQuat::from_wxyz([self.normal(), self.normal(), self.normal(), self.normal()]).unwrap()
     }
 
-    pub fn sn(&mut self, m: usize) -> SnPoint {
-        SnPoint::try_new(self.vec(m + 1)).unwrap()
+    pub fn sn(&mut self, m: usize) -> SmPoint {
+        SmPoint::try_new(self.vec(m + 1)).unwrap()
     }
 
     /// A random rotation matrix.
@@ -127,7 +127,7 @@ impl Rng {
     }
 
     /// A random walk on S^m with steps of about `step` radians.
-    pub fn walk_sn(&mut self, n: usize, m: usize, step: f64) -> Vec<SnPoint> {
+    pub fn walk_sm(&mut self, n: usize, m: usize, step: f64) -> Vec<SmPoint> {
         let mut p = self.sn(m);
         let mut out = vec![p.clone()];
         for _ in 1..n {
@@ -339,10 +339,10 @@ pub fn sandwich(a: UnitQuat, q: UnitQuat, b: UnitQuat) -> UnitQuat {
 }
 
 /// A Householder reflection of ℝ^(m+1) applied to a point of S^m (an orthogonal map).
-pub fn reflect(n: &[f64], p: &SnPoint) -> SnPoint {
+pub fn reflect(n: &[f64], p: &SmPoint) -> SmPoint {
     let nn: f64 = n.iter().map(|a| a * a).sum();
     let d: f64 = n.iter().zip(p.coords()).map(|(a, b)| a * b).sum();
-    SnPoint::try_new(
+    SmPoint::try_new(
         p.coords()
             .iter()
             .zip(n)

@@ -18,10 +18,10 @@ use crate::manifold::{Manifold, normalize};
 /// coordinates padded with zeros (S^m ⊂ S^n, see [`VecN`]): their distance, logarithm and
 /// geodesic are defined, and no operation panics on a mismatch.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SnPoint(VecN);
+pub struct SmPoint(VecN);
 
 /// # Construction
-impl SnPoint {
+impl SmPoint {
     /// Normalises `coords` onto the sphere S^(len − 1).
     ///
     /// # Errors
@@ -32,9 +32,9 @@ impl SnPoint {
     /// # Examples
     ///
     /// ```
-    /// use spherekit::SnPoint;
+    /// use spherekit::SmPoint;
     ///
-    /// let p = SnPoint::try_new(vec![0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    /// let p = SmPoint::try_new(vec![0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
     /// assert_eq!(p.dim(), 5);
     /// assert_eq!(p.coords(), &[0.0, 1.0, 0.0, 0.0, 0.0, 0.0]);
     /// ```
@@ -61,7 +61,7 @@ impl SnPoint {
     }
 }
 
-impl Manifold for SnPoint {
+impl Manifold for SmPoint {
     type Vector = VecN;
 
     fn to_vector(&self) -> VecN {
