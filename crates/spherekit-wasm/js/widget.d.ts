@@ -10,6 +10,8 @@ export interface MountOptions {
    * "Playground ↗" link to `<playground>#scene=<the scene>`; without it, no link.
    */
   playground?: string | null;
+  /** The smallest plot and legend text in CSS pixels (default 11); 0 draws the figure exactly as the CLI renders it at the view's width. */
+  minText?: number;
 }
 
 /** What {@link mount} resolves to for a valid scene. */
@@ -31,7 +33,7 @@ export interface WidgetHandle {
 export function mount(element: HTMLElement, scene: string, options?: MountOptions): Promise<WidgetHandle | null>;
 
 declare global {
-  /** `<spherekit-view scene="…" size="…" playground="…">`, defined when widget.js is loaded. */
+  /** `<spherekit-view scene="…" size="…" playground="…" min-text="…">`, defined when widget.js is loaded. */
   interface HTMLElementTagNameMap {
     'spherekit-view': HTMLElement;
   }

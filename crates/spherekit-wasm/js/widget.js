@@ -20,7 +20,8 @@ function ready() {
   return loading;
 }
 
-/** The smallest text of the figure, CSS pixels per em (as the playground's). */
+/** The smallest text of the figure by default, CSS pixels per em (as the playground's); 0 draws
+ * the figure as the CLI renders it at the view's size (the golden images). */
 const MIN_TEXT = 11;
 
 const STYLE = `
@@ -48,10 +49,11 @@ function injectStyle() {
  * Shows `scene` (JSON text) in `element`: the rendered sphere, as wide as the element (at most
  * `size` CSS pixels when given), drag to turn it, a play button that animates t and, when
  * `playground` (a URL, relative to the page) is given, a link that opens the scene there
- * (`<playground>#scene=…`). Resolves to a handle `{ pg, redraw, destroy }`, or null for a bad
+ * (`<playground>#scene=…`). Its plot and legend text is at least `minText` CSS pixels (11; 0
+ * draws the CLI's picture at that size exactly). Resolves to a handle `{ pg, redraw, destroy }`, or null for a bad
  * scene (whose message is shown as text). `element.dataset.state` becomes "ready" or "error".
  */
-export async function mount(element, scene, { size = Infinity, playground = null } = {}) {
+export async function mount(element, scene, { size = Infinity, playground = null, minText = MIN_TEXT } = {}) {
   await ready();
   injectStyle();
   element.replaceChildren();
@@ -70,7 +72,7 @@ export async function mount(element, scene, { size = Infinity, playground = null
     return null;
   }
   const dpr = window.devicePixelRatio || 1;
-  pg.set_min_text(MIN_TEXT * dpr);
+  pg.set_min_text(minText * dpr);
   let px = 0;
   /** The render width for the element's current width. */
   const fit = () => {
@@ -207,15 +209,18 @@ export async function mount(element, scene, { size = Infinity, playground = null
   };
 }
 
-/** `<spherekit-view scene="…" size="…" playground="…">`: the widget as a custom element
- * (`size`: the largest width, CSS pixels; without it the view fills the element's width). */
+/** `<spherekit-view scene="…" size="…" playground="…" min-text="…">`: the widget as a custom
+ * element (`size`: the largest width, CSS pixels; without it the view fills the element's width;
+ * `min-text`: the smallest text, CSS pixels, 11 by default). */
 class SpherekitView extends HTMLElement {
   connectedCallback() {
     if (this.started) return;
     this.started = true;
     const size = Number(this.getAttribute('size')) || Infinity;
     const playground = this.getAttribute('playground');
-    mount(this, this.getAttribute('scene') ?? '', { size, playground }).catch((e) => {
+    const minAttr = this.getAttribute('min-text');
+    const minText = minAttr === null ? MIN_TEXT : Math.max(0, Number(minAttr) || 0);
+    mount(this, this.getAttribute('scene') ?? '', { size, playground, minText }).catch((e) => {
       this.textContent = `error: ${e.message}`;
       this.dataset.state = 'error';
     });
