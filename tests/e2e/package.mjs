@@ -10,7 +10,6 @@
 // Screenshots of the pages go to tests/e2e/out/ (git-ignored).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { createServer } from 'node:http';
 import { execFileSync } from 'node:child_process';
 import { readFile, readdir, mkdir, writeFile } from 'node:fs/promises';
 import { mkdtempSync, rmSync, existsSync } from 'node:fs';
@@ -19,6 +18,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
+import { serve } from './serve.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, '../..');
@@ -27,12 +27,6 @@ const goldenDir = path.join(root, 'tests/golden');
 const outDir = path.join(here, 'out');
 const GUIDES = ['docs/web.md', 'crates/spherekit-wasm/README.md'];
 const GOLDEN_SIZE = 384;
-const MIME = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.wasm': 'application/wasm',
-  '.json': 'application/json',
-};
 
 /** The fenced code blocks of a Markdown file: `{ lang, code, line }`. */
 function codeBlocks(text) {
@@ -74,28 +68,7 @@ before(async () => {
   execFileSync('npm', ['install', '--offline', '--no-audit', '--no-fund', '--silent', path.join(scratch, tarball)], { cwd: scratch });
   installed = path.join(scratch, 'node_modules/spherekit');
 
-  server = createServer(async (req, res) => {
-    const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-    if (rel === '/favicon.ico') {
-      // Chromium asks for one on its own; the pages have none.
-      res.writeHead(204).end();
-      return;
-    }
-    const file = path.join(scratch, path.normalize(rel));
-    if (!file.startsWith(scratch)) {
-      res.writeHead(403).end();
-      return;
-    }
-    try {
-      const body = await readFile(file);
-      res.writeHead(200, { 'content-type': MIME[path.extname(file)] ?? 'application/octet-stream' });
-      res.end(body);
-    } catch {
-      res.writeHead(404).end('not found');
-    }
-  });
-  await new Promise((r) => server.listen(0, '127.0.0.1', r));
-  origin = `http://127.0.0.1:${server.address().port}`;
+  ({ server, origin } = await serve(scratch));
   browser = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     headless: true,

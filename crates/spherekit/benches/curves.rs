@@ -8,8 +8,8 @@
 
 use spherekit::{
     ArcBlend, BetaParams, BetaSpline, Bezier, BezierKim, BsplineKim, CatmullRom, CornerBlend,
-    CornerBlendS3, CubicEnd, CubicSpline, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas,
-    GeodesicSpline, LastEdge, NlerpSpline, S2Point, Squad, UnitQuat,
+    CornerBlendRotations, CubicEnd, CubicSpline, Curve, DEFAULT_CORNER_FRACTION, GammaSpline,
+    Gammas, GeodesicSpline, LastEdge, NlerpSpline, S2Point, Squad, UnitQuat,
 };
 
 /// A boxed curve of unit quaternions.
@@ -92,7 +92,9 @@ pub(crate) const METHODS: &[Method] = &[
         name: "corner-blend",
         slerps: 3,
         build: |k| {
-            Box::new(CornerBlendS3::try_new(k, 2, DEFAULT_CORNER_FRACTION).expect("corner-blend"))
+            Box::new(
+                CornerBlendRotations::try_new(k, 2, DEFAULT_CORNER_FRACTION).expect("corner-blend"),
+            )
         },
     },
 ];

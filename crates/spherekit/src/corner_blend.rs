@@ -34,7 +34,7 @@ struct CornerCore<V, F> {
     segments: Vec<Segment<V, F>>,
 }
 
-/// Where the corner blends of a [`CornerBlend`] or [`CornerBlendS3`] start and end: the cut-back
+/// Where the corner blends of a [`CornerBlend`] or [`CornerBlendRotations`] start and end: the cut-back
 /// of each corner along the edges meeting there, as fractions of those edges measured from the
 /// corner (Pobegailo (2019), §8.5: the cut points `Q₁`, `Q₂` are chosen "from kinematic
 /// requirements").
@@ -836,23 +836,23 @@ impl<P: Manifold> Curve for CornerBlend<P> {
 /// # Examples
 ///
 /// ```
-/// use spherekit::{CornerBlendS3, Curve, Manifold, Side, UnitQuat, glam::DVec3};
+/// use spherekit::{CornerBlendRotations, Curve, Manifold, Side, UnitQuat, glam::DVec3};
 ///
 /// let q1 = UnitQuat::from_axis_angle(DVec3::X, core::f64::consts::FRAC_PI_2).unwrap();
 /// let q2 = UnitQuat::from_axis_angle(DVec3::Y, core::f64::consts::FRAC_PI_2).unwrap() * q1;
-/// let c = CornerBlendS3::try_new(vec![UnitQuat::IDENTITY, q1, q2], 2, 0.25).unwrap();
+/// let c = CornerBlendRotations::try_new(vec![UnitQuat::IDENTITY, q1, q2], 2, 0.25).unwrap();
 /// let k = c.knots().to_vec();
 /// assert!(c.eval(k[3]).dist(&q2) < 1e-15);
 /// let (l, r) = (c.jet_at(k[1], Side::Left), c.jet_at(k[1], Side::Right));
 /// assert!((l.acceleration - r.acceleration).length() < 1e-13); // C²
 /// ```
 #[derive(Clone, Debug)]
-pub struct CornerBlendS3 {
+pub struct CornerBlendRotations {
     points: Vec<UnitQuat>,
     core: CornerCore<DVec4, LeftMultiplication>,
 }
 
-impl CornerBlendS3 {
+impl CornerBlendRotations {
     /// The default smoothness (C²).
     pub const DEFAULT_SMOOTHNESS: usize = 2;
 
@@ -981,7 +981,7 @@ impl CornerBlendS3 {
     }
 }
 
-impl Curve for CornerBlendS3 {
+impl Curve for CornerBlendRotations {
     type Point = UnitQuat;
 
     fn domain(&self) -> [f64; 2] {

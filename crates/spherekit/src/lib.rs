@@ -41,7 +41,7 @@
 //! | [`CubicSpline`] | all | cubic in the tangent space of each key, key velocities solved for C² (scipy's `RotationSpline` on S³); natural, clamped, scipy ends or closed | C² |
 //! | [`BetaSpline`] | all | spherical Beta spline (bias β₁, tension β₂) with a Newton interpolation solver | G¹ |
 //! | [`ArcBlend`] | all | Pobegailo's interpolating spline blending circle arcs | Cⁿ |
-//! | [`CornerBlend`], [`CornerBlendS3`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline (S²: also of small-circle arcs), cuts per corner and side, start and speed ([`CornerCuts`], [`CornerTiming`]) | Cⁿ |
+//! | [`CornerBlend`], [`CornerBlendRotations`] | all, S³ | Pobegailo's corner smoothing of a great-circle polyline (S²: also of small-circle arcs), cuts per corner and side, start and speed ([`CornerCuts`], [`CornerTiming`]) | Cⁿ |
 //!
 //! The foundations these build on are public too: quaternion algebra ([`quaternion`]: the
 //! ternary product, orthogonal complement and quotient, the 4×4 multiplication matrices), the
@@ -187,8 +187,9 @@ pub use catmull_rom_nlerp::CatmullRomNlerp;
 pub use circle::CircleArc;
 pub use continuity::{ContinuityClass, JointContinuity, continuity};
 pub use corner_blend::{
-    CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, DEFAULT_CORNER_FRACTION,
+    CornerBlend, CornerBlendRotations, CornerCuts, CornerTiming, DEFAULT_CORNER_FRACTION,
 };
+
 pub use cubic::{CubicEnd, CubicSolveInfo, CubicSpline, TANGENT_TOLERANCE};
 pub use curve::{Curve, Jet, Side};
 pub use error::{ArcLengthError, DomainError, PointError, SolveError, SplineError};
@@ -213,6 +214,13 @@ pub use slerp_jet::{ScalarJet, slerp_jet};
 pub use sm::SmPoint;
 pub use smoothing::{GroupAlgebra, GroupJet, SmoothingPolynomials};
 pub use squad::Squad;
+
+/// The former name of [`CornerBlendRotations`] (the book's corner blend of rotations on S³,
+/// a different construction from [`CornerBlend<UnitQuat>`](CornerBlend)).
+#[deprecated(
+    note = "renamed CornerBlendRotations: the book's construction on rotations, not CornerBlend<UnitQuat>"
+)]
+pub type CornerBlendS3 = CornerBlendRotations;
 
 /// The README's Rust example, compiled and run as a doctest.
 #[cfg(doctest)]

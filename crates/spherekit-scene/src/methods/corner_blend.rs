@@ -1,10 +1,12 @@
 // Copyright 2026 the Spherekit Authors
 // SPDX-License-Identifier: Apache-2.0 OR MIT
 
-//! `corner-blend`: [`spherekit::CornerBlend`] (S² and S^m) and [`spherekit::CornerBlendS3`].
+//! `corner-blend`: [`spherekit::CornerBlend`] (S² and S^m) and [`spherekit::CornerBlendRotations`].
 
 use serde_json::json;
-use spherekit::{CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, DEFAULT_CORNER_FRACTION};
+use spherekit::{
+    CornerBlend, CornerBlendRotations, CornerCuts, CornerTiming, DEFAULT_CORNER_FRACTION,
+};
 
 use crate::built::{Built, BuiltCurve, on_every_sphere};
 use crate::error::SceneError;
@@ -139,9 +141,9 @@ fn build(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
         Points::S3(keys) => {
             // The book's orientation construction (rotations act by left multiplication).
             let curve = if closed {
-                CornerBlendS3::try_with_closed(keys.clone(), smoothness, &cuts, timing)?
+                CornerBlendRotations::try_with_closed(keys.clone(), smoothness, &cuts, timing)?
             } else {
-                CornerBlendS3::try_with(keys.clone(), smoothness, &cuts, timing)?
+                CornerBlendRotations::try_with(keys.clone(), smoothness, &cuts, timing)?
             };
             knots = curve.knots().to_vec();
             BuiltCurve::S3(Built::new(curve, keys))

@@ -19,9 +19,9 @@ use core::f64::consts::TAU;
 use spherekit::glam::DVec3;
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSolver, BetaSpline, BsplineKim, CatmullRom,
-    CatmullRomNlerp, CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, Curve, GammaSpline,
-    Gammas, GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SmPoint, SplineError, Squad,
-    UnitQuat, continuity,
+    CatmullRomNlerp, CornerBlend, CornerBlendRotations, CornerCuts, CornerTiming, Curve,
+    GammaSpline, Gammas, GeodesicSpline, Manifold, NlerpSpline, S2Point, Side, SmPoint,
+    SplineError, Squad, UnitQuat, continuity,
 };
 
 use crate::support::{Rng, check_derivatives, check_derivatives_at};
@@ -518,7 +518,7 @@ fn corner_blend_loops_blend_every_corner_and_are_cn_at_the_seam() {
                 // The speed at the seam is the speed it starts with (unit on the first edge).
                 assert!((c.jet(t0).velocity.length() - 1.0).abs() < 1e-12);
                 let q = ring_s3(&mut rng, m);
-                let c = CornerBlendS3::try_new_closed(q.clone(), n, fraction).unwrap();
+                let c = CornerBlendRotations::try_new_closed(q.clone(), n, fraction).unwrap();
                 check_loop(&c, None, smooth);
                 let [t0, t1] = c.domain();
                 check_seam_order(
@@ -579,11 +579,12 @@ fn corner_blend_loops_with_cuts_timing_and_arcs() {
     // Pairs whose ratios cancel around the loop close; others would change speed at the seam.
     let pairs: Vec<[f64; 2]> = vec![[0.2, 0.3], [0.3, 0.2], [0.25, 0.25], [0.2, 0.2], [0.3, 0.3]];
     let q = ring_s3(&mut rng, m);
-    let c =
-        CornerBlendS3::try_with_closed(q.clone(), 2, &CornerCuts::Pairs(pairs), timing).unwrap();
+    let c = CornerBlendRotations::try_with_closed(q.clone(), 2, &CornerCuts::Pairs(pairs), timing)
+        .unwrap();
     check_loop(&c, None, Smooth::C2);
     let skewed = vec![[0.2, 0.3]; m];
-    let e = CornerBlendS3::try_with_closed(q, 2, &CornerCuts::Pairs(skewed), timing).unwrap_err();
+    let e = CornerBlendRotations::try_with_closed(q, 2, &CornerCuts::Pairs(skewed), timing)
+        .unwrap_err();
     assert!(
         matches!(&e, SplineError::InvalidParameter { name: "fraction", reason } if reason.contains("multiply to 1")),
         "{e}"
@@ -629,7 +630,10 @@ fn bad_loops_are_typed_errors() {
         GammaSpline::try_new_closed(q2.clone(), None, Gammas::All(1.0)).unwrap_err(),
         few
     );
-    assert_eq!(CornerBlendS3::try_new_closed(q2, 2, 0.3).unwrap_err(), few);
+    assert_eq!(
+        CornerBlendRotations::try_new_closed(q2, 2, 0.3).unwrap_err(),
+        few
+    );
 
     // Knots: one more than points.
     let count = SplineError::KnotCount {
@@ -716,7 +720,7 @@ fn bad_loops_are_typed_errors() {
         Squad::try_new_closed(qa.clone(), None).unwrap_err(),
         BsplineKim::try_new_closed(qa.clone()).unwrap_err(),
         GammaSpline::try_new_closed(qa.clone(), None, Gammas::All(1.0)).unwrap_err(),
-        CornerBlendS3::try_new_closed(qa, 2, 0.3).unwrap_err(),
+        CornerBlendRotations::try_new_closed(qa, 2, 0.3).unwrap_err(),
     ] {
         assert_eq!(e, SplineError::AntipodalClosing);
     }

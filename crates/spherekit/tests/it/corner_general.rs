@@ -16,8 +16,8 @@ use core::f64::consts::PI;
 
 use spherekit::glam::DVec3;
 use spherekit::{
-    CornerBlend, CornerBlendS3, CornerCuts, CornerTiming, Curve, Manifold, S2Point,
-    SmoothingPolynomials, SplineError, unflip,
+    CornerBlend, CornerBlendRotations, CornerCuts, CornerTiming, Curve, Manifold, S2Point,
+    SmoothingPolynomials, SplineError, UnitQuat, unflip,
 };
 
 use crate::support::*;
@@ -112,7 +112,7 @@ fn orientation_corners_with_per_corner_cuts() {
             start: -1.5,
             speed: 0.7,
         };
-        let c = CornerBlendS3::try_with(keys.clone(), n, &cuts, timing).unwrap();
+        let c = CornerBlendRotations::try_with(keys.clone(), n, &cuts, timing).unwrap();
         let d = CornerBlend::try_with(keys.clone(), n, &cuts, timing).unwrap();
         for (a, b) in c.knots().iter().zip(d.knots()) {
             assert!((a - b).abs() < 1e-14, "same knots");
@@ -449,4 +449,14 @@ fn bad_cuts_timing_and_bends_are_typed_errors() {
         CornerBlend::try_with_arcs(dup, 2, &CornerCuts::Uniform(0.2), t, &[0.1, 0.1]).unwrap_err(),
         SplineError::Coincident { index: 0 }
     );
+}
+
+/// The former name still names the type (deprecated).
+#[test]
+#[allow(deprecated, reason = "the test of the former name")]
+fn corner_blend_s3_is_the_former_name_of_corner_blend_rotations() {
+    let q1 = UnitQuat::from_axis_angle(DVec3::X, 1.0).unwrap();
+    let keys = vec![UnitQuat::IDENTITY, q1, UnitQuat::IDENTITY];
+    let c: spherekit::CornerBlendS3 = CornerBlendRotations::try_new(keys, 2, 0.25).unwrap();
+    assert!(c.eval(c.domain()[1]).dist(&UnitQuat::IDENTITY) < 1e-15);
 }

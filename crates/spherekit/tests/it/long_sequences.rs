@@ -20,8 +20,8 @@
 use spherekit::glam::{DQuat, DVec3};
 use spherekit::{
     Ambient, ArcBlend, ArcBlendTiming, BetaParams, BetaSpline, BsplineKim, CatmullRom, CornerBlend,
-    CornerBlendS3, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline, LastEdge,
-    Manifold, NlerpSpline, S2Point, Side, SmPoint, SplineError, Squad, UnitQuat,
+    CornerBlendRotations, Curve, DEFAULT_CORNER_FRACTION, GammaSpline, Gammas, GeodesicSpline,
+    LastEdge, Manifold, NlerpSpline, S2Point, Side, SmPoint, SplineError, Squad, UnitQuat,
 };
 
 use crate::support::Rng;
@@ -278,7 +278,7 @@ fn hundred_thousand_orientations() {
         &claims("corner-blend", 2, false),
     );
     check(
-        &CornerBlendS3::try_new(keys.clone(), 2, DEFAULT_CORNER_FRACTION).unwrap(),
+        &CornerBlendRotations::try_new(keys.clone(), 2, DEFAULT_CORNER_FRACTION).unwrap(),
         &keys,
         &claims("corner-blend S3", 2, false),
     );

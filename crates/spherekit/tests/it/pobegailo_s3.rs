@@ -15,8 +15,8 @@ use core::f64::consts::PI;
 
 use spherekit::glam::{DQuat, DVec3, DVec4};
 use spherekit::{
-    ArcBlend, CircleArc, CornerBlend, CornerBlendS3, Curve, Manifold, Side, SmoothingPolynomials,
-    SplineError, UnitQuat, angular_velocity_acceleration,
+    ArcBlend, CircleArc, CornerBlend, CornerBlendRotations, Curve, Manifold, Side,
+    SmoothingPolynomials, SplineError, UnitQuat, angular_velocity_acceleration,
 };
 
 use crate::support::{Rng, check_continuity, check_derivatives};
@@ -406,7 +406,7 @@ fn orientation_corner_reference_values() {
         ],
     ];
     for (n, rows) in (1..=2).zip(samples) {
-        let c = CornerBlendS3::try_new(pts.clone(), n, 0.25).unwrap();
+        let c = CornerBlendRotations::try_new(pts.clone(), n, 0.25).unwrap();
         let k = c.knots();
         for (a, b) in k.iter().zip([0.0, 1.0, 4.0 / 3.0, 7.0 / 3.0]) {
             assert!((a - sigma * b).abs() < 1e-14, "knots");
@@ -460,7 +460,7 @@ fn orientation_corner_printed_formula_misses_the_cut_points() {
     // (9.20) as printed applies the rotations to Q₁ instead of P₂
     // (`docs/derivations.md#pobegailo-8-21`).
     let pts = r3_points();
-    let c = CornerBlendS3::try_new(pts.clone(), 2, 0.25).unwrap();
+    let c = CornerBlendRotations::try_new(pts.clone(), 2, 0.25).unwrap();
     let k = c.knots();
     let (q1, q2) = (c.eval(k[1]), c.eval(k[2]));
     let e = |axis: DVec3, s: f64| UnitQuat::exp_pure(axis * s);
@@ -496,7 +496,7 @@ fn orientation_corner_is_cn_with_constant_angular_velocity_on_edges() {
     for n in 1..=10 {
         for fraction in [0.15, 0.25, 0.5] {
             let pts = random_walk(&mut rng, 5);
-            let c = CornerBlendS3::try_new(pts.clone(), n, fraction).unwrap();
+            let c = CornerBlendRotations::try_new(pts.clone(), n, fraction).unwrap();
             let k = c.knots();
             assert!(
                 c.eval(0.0).dist(&pts[0]) < 1e-15 && c.eval(k[k.len() - 1]).dist(&pts[4]) < 1e-14,
@@ -520,7 +520,7 @@ fn orientation_corner_is_cn_with_constant_angular_velocity_on_edges() {
             );
         }
     }
-    let c = CornerBlendS3::try_new(random_walk(&mut rng, 6), 3, 0.3).unwrap();
+    let c = CornerBlendRotations::try_new(random_walk(&mut rng, 6), 3, 0.3).unwrap();
     check_derivatives(&c, 80);
     let d = CornerBlend::try_new(random_walk(&mut rng, 6), 3, 0.3).unwrap();
     check_derivatives(&d, 80);
@@ -530,10 +530,10 @@ fn orientation_corner_is_cn_with_constant_angular_velocity_on_edges() {
 fn orientation_corner_equivariance_and_bad_input() {
     let mut rng = Rng(77);
     let pts = random_walk(&mut rng, 5);
-    let c = CornerBlendS3::try_new(pts.clone(), 2, 0.25).unwrap();
+    let c = CornerBlendRotations::try_new(pts.clone(), 2, 0.25).unwrap();
     let (alpha, beta) = (random_quat(&mut rng), random_quat(&mut rng));
-    let d =
-        CornerBlendS3::try_new(pts.iter().map(|&x| alpha * x * beta).collect(), 2, 0.25).unwrap();
+    let d = CornerBlendRotations::try_new(pts.iter().map(|&x| alpha * x * beta).collect(), 2, 0.25)
+        .unwrap();
     for j in 0..=50 {
         let t = c.domain()[1] * f64::from(j) / 50.0;
         assert!(
@@ -542,14 +542,14 @@ fn orientation_corner_equivariance_and_bad_input() {
         );
     }
     assert!(matches!(
-        CornerBlendS3::try_new(pts.clone(), 0, 0.25),
+        CornerBlendRotations::try_new(pts.clone(), 0, 0.25),
         Err(SplineError::InvalidParameter {
             name: "smoothness",
             ..
         })
     ));
     assert!(matches!(
-        CornerBlendS3::try_new(pts.clone(), 2, 0.75),
+        CornerBlendRotations::try_new(pts.clone(), 2, 0.75),
         Err(SplineError::InvalidParameter {
             name: "fraction",
             ..
@@ -558,13 +558,13 @@ fn orientation_corner_equivariance_and_bad_input() {
     let mut anti = pts.clone();
     anti[3] = -anti[2];
     assert_eq!(
-        CornerBlendS3::try_new(anti, 2, 0.25).unwrap_err(),
+        CornerBlendRotations::try_new(anti, 2, 0.25).unwrap_err(),
         SplineError::Antipodal { index: 2 }
     );
     let mut dup = pts;
     dup[1] = dup[0];
     assert_eq!(
-        CornerBlendS3::try_new(dup, 2, 0.25).unwrap_err(),
+        CornerBlendRotations::try_new(dup, 2, 0.25).unwrap_err(),
         SplineError::Coincident { index: 0 }
     );
     // Near-antipodal and nearly coincident keys: finite unit results.
@@ -574,7 +574,7 @@ fn orientation_corner_equivariance_and_bad_input() {
         q(-1.0, 1e-7, 0.0, 1e-9),
         q(0.0, 1.0, 0.0, 0.0),
     ];
-    for c in [CornerBlendS3::try_new(near.clone(), 2, 0.25).unwrap()] {
+    for c in [CornerBlendRotations::try_new(near.clone(), 2, 0.25).unwrap()] {
         for j in 0..=100 {
             let jet = c.jet(c.domain()[1] * f64::from(j) / 100.0);
             assert!(

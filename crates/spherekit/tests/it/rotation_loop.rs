@@ -18,10 +18,10 @@ use core::f64::consts::TAU;
 
 use spherekit::glam::DVec3;
 use spherekit::{
-    ArcBlend, BetaParams, BetaSpline, BsplineKim, CatmullRom, CatmullRomNlerp, CornerBlendS3,
-    CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GammaSpline, Gammas, GeodesicSpline,
-    Manifold, NlerpSpline, RotationLoop, Side, SplineError, Squad, UnitQuat, closes_at_antipode,
-    continuity, unflip,
+    ArcBlend, BetaParams, BetaSpline, BsplineKim, CatmullRom, CatmullRomNlerp,
+    CornerBlendRotations, CubicEnd, CubicSpline, Curve, Extrapolate, Extrapolated, GammaSpline,
+    Gammas, GeodesicSpline, Manifold, NlerpSpline, RotationLoop, Side, SplineError, Squad,
+    UnitQuat, closes_at_antipode, continuity, unflip,
 };
 
 use crate::support::{Rng, check_derivatives};
@@ -126,7 +126,7 @@ fn constructions() -> Vec<(&'static str, Build, bool, bool, Smooth)> {
         ),
         (
             "corner-blend",
-            |k, _| boxed(CornerBlendS3::try_new_closed(k, 2, 0.5)),
+            |k, _| boxed(CornerBlendRotations::try_new_closed(k, 2, 0.5)),
             false,
             false,
             Smooth::C2,
