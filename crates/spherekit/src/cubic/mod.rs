@@ -180,12 +180,12 @@ pub struct CubicSolveInfo {
 
 /// One segment, `c(t) = Exp_p(v(s))`, `v(s) = a·s + b·s² + c·s³` in the local `s ∈ [0, 1]`.
 #[derive(Clone, Debug)]
-struct Segment<V> {
-    start: V,
-    a: V,
-    b: V,
-    c: V,
-    inv_h: f64,
+pub(crate) struct Segment<V> {
+    pub(crate) start: V,
+    pub(crate) a: V,
+    pub(crate) b: V,
+    pub(crate) c: V,
+    pub(crate) inv_h: f64,
 }
 
 /// The C² cubic spline through keys at given times on any sphere, with natural, clamped or
@@ -649,6 +649,11 @@ impl<P: Manifold> CubicSpline<P> {
         self.info
     }
 
+    /// The segments' cubics (the fit's energy and residuals).
+    pub(crate) fn segments(&self) -> &[Segment<P::Vector>] {
+        &self.segments
+    }
+
     /// The number of segments (`n − 1` for `n` keys; `n` when closed).
     #[must_use]
     pub fn segment_count(&self) -> usize {
@@ -680,7 +685,7 @@ impl<P: Manifold> CubicSpline<P> {
         let s = (t - knots[i]) * g.inv_h;
         // The cubic, its derivative and its length must be finite for the exponential to be a
         // point (checked before `jet_local`, which renormalises).
-        let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
+        let v = g.tangent(s);
         let w = ((g.c.clone() * (3.0 * s) + g.b.clone() * 2.0) * s + g.a.clone()) * g.inv_h;
         if !(v.length().is_finite() && w.length().is_finite() && (s * g.inv_h).is_finite()) {
             return None;
@@ -721,7 +726,7 @@ impl<P: Manifold> CubicSpline<P> {
             return self.end_key(i).clone();
         }
         let g = &self.segments[i];
-        let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
+        let v = g.tangent(s);
         let rho = v.length();
         let (sn, cs) = math::sin_cos(rho);
         let sinc = if rho < 1e-4 {
@@ -732,13 +737,106 @@ impl<P: Manifold> CubicSpline<P> {
         P::from_vector_unchecked(renormalize(g.start.clone() * cs + v * sinc))
     }
 
-    /// The point and velocity of segment `i` at `s`, with what the acceleration needs.
+    /// The point and velocity of segment `i` at `s` (the keys themselves at `s = 0` and `1`).
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-    fn local(&self, i: usize, s: f64) -> Local<P> {
-        let g = &self.segments[i];
-        let v = ((g.c.clone() * s + g.b.clone()) * s + g.a.clone()) * s;
-        let w = ((g.c.clone() * (3.0 * s) + g.b.clone() * 2.0) * s + g.a.clone()) * g.inv_h;
-        let p = &g.start;
+    fn local(&self, i: usize, s: f64) -> (P, Local<P::Vector>) {
+        let l = self.segments[i].local(s);
+        let point = if s == 0.0 {
+            self.points[i].clone()
+        } else if s == 1.0 {
+            self.end_key(i).clone()
+        } else {
+            P::from_vector_unchecked(renormalize(l.q.clone()))
+        };
+        (point, l)
+    }
+
+    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
+        let (point, local) = self.local(i, s);
+        let (velocity, acceleration) = self.segments[i].velocity_acceleration(s, local);
+        Jet {
+            point,
+            velocity,
+            acceleration,
+        }
+    }
+
+    /// The point and the velocity at `t`: the [`Curve::jet`] without its acceleration, the
+    /// same bits, in about three quarters of the time (the angular rate needs no more).
+    #[must_use]
+    pub fn point_velocity(&self, t: f64) -> (P, P::Vector) {
+        let (i, s) = self.knots.locate(t, Side::Right);
+        let (point, l) = self.local(i, s);
+        (point, l.velocity)
+    }
+
+    /// [`point_velocity`](Self::point_velocity) at many parameters (increasing parameters
+    /// are located by stepping, as in [`Curve::jet_many`]).
+    ///
+    /// # Panics
+    ///
+    /// If `out` and `ts` have different lengths.
+    pub fn point_velocity_many(&self, ts: &[f64], out: &mut [(P, P::Vector)]) {
+        self.knots.map_into(ts, Side::Right, out, |i, s| {
+            let (point, l) = self.local(i, s);
+            (point, l.velocity)
+        });
+    }
+}
+
+impl<V: Ambient> Segment<V> {
+    /// The segment of the cubic Hermite formula from `p₀` to `p₁` over a width `h`, with the
+    /// velocities `V₀` at `p₀` and `V₁` at `p₁` (ambient, tangent at their keys):
+    /// `v(s) = a·s + b·s² + c·s³` in the local `s ∈ [0, 1]` with `v(0) = 0`, `v′(0) = h·V₀`,
+    /// `v(1) = r = Log_{p₀}(p₁)` and `v′(1) = h·U`, `U = (dExp_r)⁻¹V₁`:
+    ///
+    /// ```text
+    /// a = h·V₀,   b = 3r − 2h·V₀ − h·U,   c = h·V₀ + h·U − 2r,
+    /// U = ê·(V₁·ê₁) + (V₁ − ê₁·(V₁·ê₁)) / sinc θ,   ê₁ = ê·cos θ − p₀·sin θ,
+    /// ```
+    ///
+    /// with `θ = |r|`, `ê = r/θ`: the differential of `Exp_{p₀}` at `r` carries `ê` to the
+    /// geodesic's direction `ê₁` at `p₁` and scales the directions normal to both by `sinc θ`
+    /// (`docs/derivations.md#cubic-spline`). `None` for antipodal keys.
+    pub(crate) fn hermite(p0: &V, p1: &V, v0: &V, v1: &V, h: f64) -> Option<Self> {
+        let (theta, e, (sn, cs)) = geodesic_frame_sin_cos(p0, p1)?;
+        let e1 = e.clone() * cs - p0.clone() * sn;
+        let along = v1.dot(&e1);
+        let sinc = if theta < 1e-4 {
+            math::sinc(theta)
+        } else {
+            sn / theta
+        };
+        let u = e.clone() * along + (v1.clone() - e1 * along) * (1.0 / sinc);
+        let r = e * theta;
+        let (hv, hu) = (v0.clone() * h, u * h);
+        Some(Self {
+            start: p0.clone(),
+            b: r.clone() * 3.0 - hv.clone() * 2.0 - hu.clone(),
+            c: hv.clone() + hu - r * 2.0,
+            a: hv,
+            inv_h: 1.0 / h,
+        })
+    }
+
+    /// The tangent vector `v(s)`, and its derivatives with respect to `s`.
+    pub(crate) fn tangent(&self, s: f64) -> V {
+        ((self.c.clone() * s + self.b.clone()) * s + self.a.clone()) * s
+    }
+
+    /// `∫|v″(t)|² dt` over the segment (`t = t₀ + s·h`): `(4|b|² + 12 b·c + 12|c|²)/h³`.
+    pub(crate) fn energy(&self) -> f64 {
+        let (b, c) = (&self.b, &self.c);
+        (4.0 * b.dot(b) + 12.0 * b.dot(c) + 12.0 * c.dot(c)) * self.inv_h.powi(3)
+    }
+
+    /// The first-order part of the jet at `s`, with what the acceleration reuses.
+    #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+    pub(crate) fn local(&self, s: f64) -> Local<V> {
+        let v = self.tangent(s);
+        let w = ((self.c.clone() * (3.0 * s) + self.b.clone() * 2.0) * s + self.a.clone())
+            * self.inv_h;
+        let p = &self.start;
         let rho = v.length();
         let (sn, cs) = math::sin_cos(rho);
         let sinc = if rho < 1e-4 {
@@ -757,15 +855,7 @@ impl<P: Manifold> CubicSpline<P> {
         let w_par = w.dot(&e);
         let w_perp = w - e.clone() * w_par;
         let velocity = e_end.clone() * w_par + w_perp.clone() * sinc;
-        let point = if s == 0.0 {
-            self.points[i].clone()
-        } else if s == 1.0 {
-            self.end_key(i).clone()
-        } else {
-            P::from_vector_unchecked(renormalize(q.clone()))
-        };
         Local {
-            point,
             velocity,
             q,
             e,
@@ -778,11 +868,10 @@ impl<P: Manifold> CubicSpline<P> {
         }
     }
 
-    fn jet_local(&self, i: usize, s: f64) -> Jet<P> {
-        let g = &self.segments[i];
-        let acc = (g.c.clone() * (6.0 * s) + g.b.clone() * 2.0) * (g.inv_h * g.inv_h);
+    /// The velocity and the acceleration at `s` from the first-order part there.
+    pub(crate) fn velocity_acceleration(&self, s: f64, local: Local<V>) -> (V, V) {
+        let acc = (self.c.clone() * (6.0 * s) + self.b.clone() * 2.0) * (self.inv_h * self.inv_h);
         let Local {
-            point,
             velocity,
             q,
             e,
@@ -792,7 +881,7 @@ impl<P: Manifold> CubicSpline<P> {
             rho,
             sinc,
             sin_cos,
-        } = self.local(i, s);
+        } = local;
         let dsinc = sinc_deriv(rho, sin_cos);
         let a_par = acc.dot(&e);
         let a_perp = acc - e.clone() * a_par;
@@ -800,51 +889,24 @@ impl<P: Manifold> CubicSpline<P> {
         let acceleration = e_end * a_par
             + a_perp * sinc
             + q * (-w_par * w_par)
-            + g.start.clone() * (-perp2 * sinc)
+            + self.start.clone() * (-perp2 * sinc)
             + e * (perp2 * dsinc)
             + w_perp * (2.0 * dsinc * w_par);
-        Jet {
-            point,
-            velocity,
-            acceleration,
-        }
-    }
-
-    /// The point and the velocity at `t`: the [`Curve::jet`] without its acceleration, the
-    /// same bits, in about three quarters of the time (the angular rate needs no more).
-    #[must_use]
-    pub fn point_velocity(&self, t: f64) -> (P, P::Vector) {
-        let (i, s) = self.knots.locate(t, Side::Right);
-        let l = self.local(i, s);
-        (l.point, l.velocity)
-    }
-
-    /// [`point_velocity`](Self::point_velocity) at many parameters (increasing parameters
-    /// are located by stepping, as in [`Curve::jet_many`]).
-    ///
-    /// # Panics
-    ///
-    /// If `out` and `ts` have different lengths.
-    pub fn point_velocity_many(&self, ts: &[f64], out: &mut [(P, P::Vector)]) {
-        self.knots.map_into(ts, Side::Right, out, |i, s| {
-            let l = self.local(i, s);
-            (l.point, l.velocity)
-        });
+        (velocity, acceleration)
     }
 }
 
 /// The first-order part of a segment's jet, and the terms its acceleration reuses.
-struct Local<P: Manifold> {
-    point: P,
-    velocity: P::Vector,
+pub(crate) struct Local<V> {
+    pub(crate) velocity: V,
     /// `Exp` before renormalisation.
-    q: P::Vector,
+    pub(crate) q: V,
     /// The unit direction of the tangent vector `v`, and its parallel transport to `q`.
-    e: P::Vector,
-    e_end: P::Vector,
+    e: V,
+    e_end: V,
     /// The parts of `v′` along and across `e`.
     w_par: f64,
-    w_perp: P::Vector,
+    w_perp: V,
     /// `|v|`, `sin|v|/|v|` and `(sin|v|, cos|v|)`.
     rho: f64,
     sinc: f64,

@@ -18,6 +18,7 @@ mod continuity;
 mod corner_general;
 mod cubic;
 mod extrapolate;
+mod fit;
 mod gamma_spline;
 mod geodesic;
 mod hermite;

@@ -1,0 +1,516 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Fitting measured samples: the smoothing spline of the cubic family on every sphere, with the
+//! smoothing parameter given, chosen by generalised cross-validation or by a target residual,
+//! and key reduction within an error bound.
+//!
+//! The problem (samples `yᵢ` at times `tᵢ`, weights `wᵢ > 0`): the curve `c` of the
+//! [`CubicSpline`] family (keys at key times, natural ends or closed) that minimises
+//!
+//! ```text
+//! F(c) = Σ wᵢ·d(c(tᵢ), yᵢ)² + λ·E(c),   E(c) = Σₖ ∫ |vₖ″(t)|² dt,
+//! ```
+//!
+//! with `d` the distance of the sphere (great-circle angle; on S³ the rotation angle, twice the
+//! quaternion angle, and `±y` the same sample) and `E` the tangent-space energy of the cubic's
+//! segments (`c(t) = Exp_{pₖ}(vₖ(t))`, on S³ scaled by the same factor 4 as `d²`). On a great
+//! circle (one rotation axis) both reduce to the Euclidean smoothing spline of the angle along
+//! it, `Σ wᵢ(θ(tᵢ) − θᵢ)² + λ∫θ″²` (Reinsch 1967), which is
+//! `scipy.interpolate.make_smoothing_spline(t, θ, w, lam)`.
+//!
+//! - The solver ([`solve`]): Gauss–Newton on the keys with the key velocities as unknowns tied
+//!   by the continuity equations, a banded KKT system per step, O(n).
+//! - λ by generalised cross-validation (Craven & Wahba 1979): minimise
+//!   `GCV(λ) = N·Σwᵢd(c(tᵢ), yᵢ)² / (N − tr A(λ))²` over `ln λ`, with `tr A` the trace of the
+//!   hat matrix of the developed (tangent-space) problem, the Euclidean smoothing spline with the
+//!   same times and weights ([`reinsch`]): exact on a great circle, where it is scipy's criterion
+//!   with unit weights, and computed exactly in O(N). The effective degrees of freedom reported
+//!   are `m·tr A` for a curve on S^m (each tangent direction smoothed alike).
+//! - λ by a target residual `σ`: the weighted RMS residual grows with λ; `ln λ` is found by a
+//!   safeguarded secant (Illinois) iteration to 1e-9 relative.
+//! - Key reduction ([`reduce`]): the fewest keys among the sample times within `ε`.
+//!
+//! Sources: C. H. Reinsch (1967), Smoothing by spline functions, Numer. Math. 10, 177–183;
+//! P. Craven, G. Wahba (1979), Smoothing noisy data with spline functions, Numer. Math. 31,
+//! 377–403; M. F. Hutchinson, F. R. de Hoog (1985), Smoothing noisy data with spline functions,
+//! Numer. Math. 47, 99–106; P. E. Jupp, J. T. Kent (1987), Fitting smooth paths to spherical
+//! data, Appl. Statist. 36, 34–46. The derivation: `docs/derivations.md#smoothing-spline`.
+
+mod reduce;
+mod reinsch;
+mod solve;
+
+use crate::ambient::Ambient;
+use crate::cubic::{CubicEnd, CubicSpline};
+use crate::error::{PointError, SplineError};
+use crate::knots::Knots;
+use crate::manifold::Manifold;
+use solve::Samples;
+
+/// How much a fit smooths.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Smoothing {
+    /// The smoothing parameter λ ≥ 0 itself (λ = 0: least squares on the keys; with a key at
+    /// every sample, interpolation).
+    Lambda(f64),
+    /// λ by generalised cross-validation (keys at every sample only).
+    Gcv,
+    /// λ such that the weighted RMS residual `√(Σwᵢdᵢ²/Σwᵢ)` is `σ` radians (the noise level a
+    /// user knows; MATLAB `spaps`'s tolerance in RMS form).
+    Rms(f64),
+}
+
+/// Where a fit's keys are.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub enum FitKeys {
+    /// A key at every sample time: the smoothing spline.
+    #[default]
+    Samples,
+    /// This many keys among the sample times, as evenly spread over the samples as the times
+    /// allow (the first and last sample always keys; closed: the first).
+    Count(usize),
+    /// The fewest keys among the sample times whose fit stays within this distance (radians) of
+    /// every sample and of the samples' geodesic interpolation midway between samples.
+    MaxError(f64),
+}
+
+/// What to fit: [`CubicSpline::try_fit`].
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct FitOptions {
+    /// The smoothing; `None`: [`Smoothing::Gcv`] with a key at every sample, λ = 0 otherwise.
+    pub smoothing: Option<Smoothing>,
+    /// A positive weight per sample (default 1).
+    pub weights: Option<Vec<f64>>,
+    /// Where the keys are.
+    pub keys: FitKeys,
+}
+
+/// What a fit found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitReport {
+    /// The smoothing parameter used.
+    pub lambda: f64,
+    /// The weighted RMS residual `√(Σwᵢdᵢ²/Σwᵢ)`, radians (rotation angle on S³).
+    pub rms: f64,
+    /// The largest residual `maxᵢ dᵢ`, radians; with [`FitKeys::MaxError`] also over the midpoints
+    /// between samples.
+    pub max: f64,
+    /// The number of keys.
+    pub keys: usize,
+    /// The key times (closed: and the return time).
+    pub key_times: Vec<f64>,
+    /// Gauss–Newton iterations of the final fit (of every fit tried, for a chosen λ or keys).
+    pub iterations: usize,
+    /// The effective degrees of freedom `m·tr A(λ)` (S^m; keys at every sample only).
+    pub edf: Option<f64>,
+}
+
+/// # Fitting samples
+impl<P: Manifold> CubicSpline<P> {
+    /// The cubic spline fitted to `samples` at the `times` (closed: one more, the time at which
+    /// the loop is back at the first sample): the curve of this family minimising
+    /// `Σ wᵢ·d(c(tᵢ), yᵢ)² + λ·Σₖ∫|vₖ″|²` (the definitions
+    /// below), with λ given, chosen by generalised cross-validation or by a target RMS
+    /// residual, and keys at every sample time or as few as an error bound allows.
+    ///
+    /// On S³ ([`UnitQuat`](crate::UnitQuat)) the samples are rotations: `q` and `−q` are the
+    /// same sample (sensors give either), and distances are rotation angles.
+    ///
+    /// # Errors
+    ///
+    /// - [`SplineError::TooFewPoints`] for fewer than 2 samples (3 closed);
+    /// - [`SplineError::InvalidPoint`] for samples of different dimensions;
+    /// - the knot errors of [`Knots::try_new`] for the times, and [`SplineError::KnotCount`]
+    ///   unless there is one time per sample (closed: one more);
+    /// - [`SplineError::InvalidParameter`] `weights` (not one per sample, or not positive and
+    ///   finite), `smoothing` (λ negative or not finite, σ not positive and finite, or out of
+    ///   reach, or GCV with fewer keys than samples), `max_error` (not positive and finite),
+    ///   `keys` (below the minimum or above the samples);
+    /// - [`SplineError::Antipodal`] for antipodal consecutive samples (not on S³);
+    /// - [`SplineError::Solve`] if Gauss–Newton does not converge.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::glam::DVec3;
+    /// use spherekit::{CubicSpline, Curve, FitOptions, Manifold, S2Point, Smoothing};
+    ///
+    /// // Noisy samples of a circle of latitude.
+    /// let times: Vec<f64> = (0..40).map(|i| f64::from(i) * 0.1).collect();
+    /// let samples: Vec<S2Point> = times
+    ///     .iter()
+    ///     .enumerate()
+    ///     .map(|(i, &t)| {
+    ///         let wobble = 0.01 * (f64::from(i as u32) * 2.3).sin();
+    ///         S2Point::try_new(DVec3::new(t.cos(), t.sin(), 0.5 + wobble)).unwrap()
+    ///     })
+    ///     .collect();
+    /// let options = FitOptions { smoothing: Some(Smoothing::Gcv), ..FitOptions::default() };
+    /// let (curve, report) = CubicSpline::try_fit(samples.clone(), times, &options, false).unwrap();
+    /// assert!(report.rms < 0.01 && report.lambda > 0.0);
+    /// assert!(curve.eval(2.0).dist(&samples[20]) < 0.02);
+    /// ```
+    pub fn try_fit(
+        samples: Vec<P>,
+        times: Vec<f64>,
+        options: &FitOptions,
+        closed: bool,
+    ) -> Result<(Self, FitReport), SplineError> {
+        let vectors: Vec<P::Vector> = samples.iter().map(Manifold::to_vector).collect();
+        #[cfg(feature = "compact")]
+        let (keys, report) = {
+            use crate::sm::SmPoint;
+            let vectors = vectors.iter().map(|v| crate::ambient::VecN::new(v.to_vec())).collect();
+            let (keys, report) = fit::<SmPoint>(vectors, times, options, closed, P::SPEED_SCALE)?;
+            let like = samples[0].to_vector();
+            let keys: Vec<P::Vector> = keys.iter().map(|k| like.with_coords(k.as_slice())).collect();
+            (keys, report)
+        };
+        #[cfg(not(feature = "compact"))]
+        let (keys, report) = fit::<P>(vectors, times, options, closed, P::SPEED_SCALE)?;
+        let points = keys.into_iter().map(P::from_vector_unchecked).collect();
+        let curve = Self::try_new(points, Some(report.key_times.clone()), CubicEnd::Natural, closed)?;
+        Ok((curve, report))
+    }
+}
+
+/// The fit on `Q`'s vectors: the fitted keys and the report.
+fn fit<Q: Manifold>(
+    mut vectors: Vec<Q::Vector>,
+    times: Vec<f64>,
+    options: &FitOptions,
+    closed: bool,
+    scale: f64,
+) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
+    let n = vectors.len();
+    let min = if closed { 3 } else { 2 };
+    if n < min {
+        return Err(SplineError::TooFewPoints { min, got: n });
+    }
+    let dim = vectors[0].dim();
+    if let Some(index) = vectors.iter().position(|v| v.dim() != dim) {
+        return Err(SplineError::InvalidPoint {
+            index,
+            reason: PointError::WrongDimension {
+                expected: dim,
+                got: vectors[index].dim(),
+            },
+        });
+    }
+    let knots = Knots::try_new(times)?;
+    let expected = n + usize::from(closed);
+    if knots.as_slice().len() != expected {
+        return Err(SplineError::KnotCount {
+            expected,
+            got: knots.as_slice().len(),
+        });
+    }
+    let weights = match &options.weights {
+        None => vec![1.0; n],
+        Some(w) if w.len() != n => {
+            return Err(invalid(
+                "weights",
+                format!("must have one weight per sample: {n} samples, got {}", w.len()),
+            ));
+        }
+        Some(w) => {
+            if let Some(i) = w.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+                return Err(invalid(
+                    "weights",
+                    format!("weights[{i}] must be positive and finite, got {}", w[i]),
+                ));
+            }
+            w.clone()
+        }
+    };
+    let smoothing = match (&options.smoothing, &options.keys) {
+        (Some(s), _) => s.clone(),
+        (None, FitKeys::Samples) => Smoothing::Gcv,
+        (None, _) => Smoothing::Lambda(0.0),
+    };
+    match smoothing {
+        Smoothing::Lambda(l) if !(l.is_finite() && l >= 0.0) => {
+            return Err(invalid(
+                "smoothing",
+                format!("λ must be a finite number ≥ 0, got {l}"),
+            ));
+        }
+        Smoothing::Rms(s) if !(s.is_finite() && s > 0.0) => {
+            return Err(invalid(
+                "smoothing",
+                format!("the target rms must be a positive finite number of radians, got {s}"),
+            ));
+        }
+        Smoothing::Gcv if options.keys != FitKeys::Samples => {
+            return Err(invalid(
+                "smoothing",
+                "\"gcv\" needs a key at every sample (no keys or max_error); give λ or an rms"
+                    .into(),
+            ));
+        }
+        _ => {}
+    }
+    match options.keys {
+        FitKeys::Count(m) if m < min || m > n => {
+            return Err(invalid(
+                "keys",
+                format!("must be between {min} and the number of samples, {n}; got {m}"),
+            ));
+        }
+        FitKeys::MaxError(e) if !(e.is_finite() && e > 0.0) => {
+            return Err(invalid(
+                "max_error",
+                format!("must be a positive finite number of radians, got {e}"),
+            ));
+        }
+        _ => {}
+    }
+    // Rotations: each sample's sign nearest the previous one's (the fit does not depend on the
+    // signs; the starting keys do).
+    let sign_free = scale != 1.0;
+    if sign_free {
+        for i in 1..n {
+            if vectors[i - 1].dot(&vectors[i]) < 0.0 {
+                vectors[i] = vectors[i].clone() * -1.0;
+            }
+        }
+    }
+    let problem = Samples::<Q> {
+        points: vectors,
+        times: knots.as_slice().to_vec(),
+        weights,
+        closed,
+        scale,
+        sign_free,
+    };
+    match options.keys {
+        FitKeys::Samples => {
+            let idx: Vec<usize> = (0..n).collect();
+            problem.fit_on(&idx, &smoothing)
+        }
+        FitKeys::Count(m) => {
+            let idx = reduce::even_keys(&problem, m);
+            problem.fit_on(&idx, &smoothing)
+        }
+        FitKeys::MaxError(eps) => reduce::reduce(&problem, eps, &smoothing),
+    }
+}
+
+fn invalid(name: &'static str, reason: String) -> SplineError {
+    SplineError::InvalidParameter { name, reason }
+}
+
+/// A fit on given keys, with its report.
+pub(crate) struct Fitted<V> {
+    pub(crate) keys: Vec<V>,
+    pub(crate) report: FitReport,
+    /// Each sample's distance to the curve.
+    pub(crate) dist: Vec<f64>,
+}
+
+impl<Q: Manifold> Samples<Q> {
+    /// The fit on the keys `idx` with the given smoothing, and its report.
+    pub(crate) fn fit_on(&self, idx: &[usize], smoothing: &Smoothing) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
+        let f = self.fitted(idx, smoothing, None)?;
+        Ok((f.keys, f.report))
+    }
+
+    /// [`fit_on`](Self::fit_on) with the per-sample distances, from starting keys `start`
+    /// (default: the samples at the keys).
+    pub(crate) fn fitted(
+        &self,
+        idx: &[usize],
+        smoothing: &Smoothing,
+        start: Option<Vec<Q::Vector>>,
+    ) -> Result<Fitted<Q::Vector>, SplineError> {
+        let start = start.unwrap_or_else(|| idx.iter().map(|&i| self.points[i].clone()).collect());
+        let all = idx.len() == self.points.len();
+        let mut iterations = 0;
+        let (lambda, solved) = match *smoothing {
+            Smoothing::Lambda(l) => {
+                let s = self.solve(l, idx, start)?;
+                (l, s)
+            }
+            Smoothing::Gcv => self.gcv(idx, start, &mut iterations)?,
+            Smoothing::Rms(sigma) => self.rms_target(idx, start, sigma, &mut iterations)?,
+        };
+        iterations += solved.iterations;
+        let mut dist = vec![0.0; self.points.len()];
+        let (rss, _) = self.evaluate(idx, &solved.curve, &mut dist);
+        let total: f64 = self.weights.iter().sum();
+        let dim = start_dim(&solved.curve);
+        let edf = all.then(|| (dim - 1) as f64 * reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed));
+        let keys: Vec<Q::Vector> = solved.curve.points().iter().map(Manifold::to_vector).collect();
+        Ok(Fitted {
+            keys,
+            report: FitReport {
+                lambda,
+                rms: (rss / total).sqrt(),
+                max: dist.iter().fold(0.0, |m: f64, &d| m.max(d)),
+                keys: idx.len(),
+                key_times: self.key_times(idx),
+                iterations,
+                edf,
+            },
+            dist,
+        })
+    }
+
+    /// λ minimising the generalised cross-validation score, and the fit there.
+    fn gcv(&self, idx: &[usize], start: Vec<Q::Vector>, iterations: &mut usize) -> Result<(f64, solve::Solved<Q>), SplineError> {
+        let n = self.points.len() as f64;
+        let (lo, hi) = self.lambda_range();
+        let mut keys = start;
+        let score = |u: f64, keys: &mut Vec<Q::Vector>, iterations: &mut usize| -> Result<(f64, solve::Solved<Q>), SplineError> {
+            let lambda = u.exp();
+            let s = self.solve(lambda, idx, keys.clone())?;
+            *iterations += s.iterations;
+            *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
+            let tr = reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed);
+            let denom = (n - tr).max(f64::MIN_POSITIVE);
+            Ok((n * s.rss / (denom * denom), s))
+        };
+        // A grid of half decades over the range, from the interpolating end (warm starts),
+        // then golden-section search between the neighbours of the best grid point.
+        let step = 0.5 * core::f64::consts::LN_10;
+        let count = (((hi - lo) / step).ceil() as usize).max(2);
+        let mut grid = Vec::with_capacity(count + 1);
+        for j in 0..=count {
+            let u = lo + (hi - lo) * j as f64 / count as f64;
+            let (g, _) = score(u, &mut keys, iterations)?;
+            grid.push((u, g, keys.clone()));
+        }
+        let best = (0..grid.len())
+            .min_by(|&a, &b| grid[a].1.total_cmp(&grid[b].1))
+            .unwrap_or(0);
+        let (mut a, mut b) = (
+            grid[best.saturating_sub(1)].0,
+            grid[(best + 1).min(grid.len() - 1)].0,
+        );
+        let mut keys = grid[best].2.clone();
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        let mut x1 = b - r * (b - a);
+        let mut x2 = a + r * (b - a);
+        let (mut f1, _) = score(x1, &mut keys, iterations)?;
+        let (mut f2, _) = score(x2, &mut keys, iterations)?;
+        while b - a > 1e-6 {
+            if f1 <= f2 {
+                b = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = b - r * (b - a);
+                f1 = score(x1, &mut keys, iterations)?.0;
+            } else {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + r * (b - a);
+                f2 = score(x2, &mut keys, iterations)?.0;
+            }
+        }
+        let u = 0.5 * (a + b);
+        let mut best_u = u;
+        let mut best_g = score(u, &mut keys, iterations)?.0;
+        // The golden-section search stays inside its bracket; keep the grid's best if better.
+        if grid[best].1 < best_g {
+            best_u = grid[best].0;
+            best_g = grid[best].1;
+            keys = grid[best].2.clone();
+        }
+        let _ = best_g;
+        let lambda = best_u.exp();
+        let s = self.solve(lambda, idx, keys)?;
+        Ok((lambda, s))
+    }
+
+    /// λ whose weighted RMS residual is `sigma`, and the fit there.
+    fn rms_target(&self, idx: &[usize], start: Vec<Q::Vector>, sigma: f64, iterations: &mut usize) -> Result<(f64, solve::Solved<Q>), SplineError> {
+        let total: f64 = self.weights.iter().sum();
+        let (lo, hi) = self.lambda_range();
+        // The range widened: below it the fit interpolates, above it it is the limit geodesic.
+        let (mut a, mut b) = (lo - 4.0 * core::f64::consts::LN_10, hi + 8.0 * core::f64::consts::LN_10);
+        let mut keys = start;
+        let rms_at = |u: f64, keys: &mut Vec<Q::Vector>, iterations: &mut usize| -> Result<(f64, solve::Solved<Q>), SplineError> {
+            let s = self.solve(u.exp(), idx, keys.clone())?;
+            *iterations += s.iterations;
+            *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
+            Ok(((s.rss / total).sqrt(), s))
+        };
+        let (ra, _) = rms_at(a, &mut keys, iterations)?;
+        let low_keys = keys.clone();
+        let (rb, _) = rms_at(b, &mut keys, iterations)?;
+        if sigma < ra {
+            return Err(invalid(
+                "smoothing",
+                format!("the target rms {sigma:e} rad is below the residual of the least-squares fit on these keys, {ra:e} rad"),
+            ));
+        }
+        if sigma > rb {
+            return Err(invalid(
+                "smoothing",
+                format!("the target rms {sigma:e} rad is above the residual of the best constant-speed geodesic, {rb:e} rad"),
+            ));
+        }
+        // Illinois on f(u) = ln rms(u) − ln σ, bracketed.
+        let target = sigma.ln();
+        let (mut fa, mut fb) = (ra.max(f64::MIN_POSITIVE).ln() - target, rb.ln() - target);
+        keys = low_keys;
+        let mut side = 0;
+        for _ in 0..200 {
+            let u = if fa.is_finite() && fa != fb {
+                (a * fb - b * fa) / (fb - fa)
+            } else {
+                0.5 * (a + b)
+            };
+            let u = if u > a && u < b { u } else { 0.5 * (a + b) };
+            let (r, s) = rms_at(u, &mut keys, iterations)?;
+            let f = r.max(f64::MIN_POSITIVE).ln() - target;
+            if f.abs() <= 1e-10 || b - a <= 1e-13 * (1.0 + u.abs()) {
+                return Ok((u.exp(), s));
+            }
+            if f < 0.0 {
+                a = u;
+                fa = f;
+                if side == -1 {
+                    fb *= 0.5;
+                }
+                side = -1;
+            } else {
+                b = u;
+                fb = f;
+                if side == 1 {
+                    fa *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        Err(SplineError::Solve(crate::error::SolveError::NoConvergence { iterations: 200, residual: f64::NAN }))
+    }
+
+    /// A range of `ln λ` over which the fit goes from nearly interpolating (`tr A ≥ N − 0.1`)
+    /// to nearly the limit geodesic (`tr A ≤ 2.01`, closed `1.01`), from the hat matrix's
+    /// trace alone.
+    fn lambda_range(&self) -> (f64, f64) {
+        let n = self.points.len() as f64;
+        let tr = |u: f64| reinsch::hat_trace(&self.times, &self.weights, u.exp(), self.closed);
+        // The natural scale: λ ~ w·h³ for a sample spacing h.
+        let span = self.times[self.times.len() - 1] - self.times[0];
+        let h = span / n;
+        let wmean = self.weights.iter().sum::<f64>() / n;
+        let mut lo = (wmean * h * h * h).ln();
+        while tr(lo) < n - 0.1 && lo > -700.0 {
+            lo -= core::f64::consts::LN_10;
+        }
+        let floor = if self.closed { 1.01 } else { 2.01 };
+        let mut hi = lo + core::f64::consts::LN_10;
+        while tr(hi) > floor && hi < 700.0 {
+            hi += core::f64::consts::LN_10;
+        }
+        (lo, hi)
+    }
+}
+
+fn start_dim<Q: Manifold>(c: &CubicSpline<Q>) -> usize {
+    c.points()[0].to_vector().dim()
+}

@@ -1,0 +1,156 @@
+// Copyright 2026 the Spherekit Authors
+// SPDX-License-Identifier: Apache-2.0 OR MIT
+
+//! Key reduction: the fewest keys among the sample times whose fit stays within `ε` of every
+//! sample and of the samples' geodesic interpolation midway between samples.
+//!
+//! Greedy refinement, then a removal pass:
+//! 1. start from the two end samples (closed: three samples evenly spread);
+//! 2. fit on the keys; in every segment whose largest error (at its samples and midpoints)
+//!    exceeds `ε`, make the sample nearest the worst point a key; repeat until no segment
+//!    exceeds `ε` (each round at least halves the violating segments' spans, so the rounds are
+//!    O(log N), each an O(N) fit);
+//! 3. for each key in turn (interior keys of an open curve), from the one whose neighbouring
+//!    segments have the smallest errors, drop it if the fit without it is still within `ε`.
+//!
+//! The fit at each step is the least-squares cubic on the keys (λ = 0 unless given).
+
+use super::solve::Samples;
+use super::{FitReport, Fitted, Smoothing};
+use crate::ambient::Ambient;
+use crate::curve::Curve;
+use crate::error::SplineError;
+use crate::manifold::{Manifold, slerp_vector};
+
+/// `m` keys among the samples, spread as evenly as the sample indices allow.
+pub(super) fn even_keys<Q: Manifold>(problem: &Samples<Q>, m: usize) -> Vec<usize> {
+    let n = problem.points.len();
+    let mut idx: Vec<usize> = if problem.closed {
+        (0..m).map(|j| (j * n) / m).collect()
+    } else {
+        (0..m).map(|j| ((j * (n - 1)) as f64 / (m - 1) as f64).round() as usize).collect()
+    };
+    idx.dedup();
+    idx
+}
+
+/// The largest error of the fit on `idx` in each segment (samples and midpoints), and where.
+fn segment_errors<Q: Manifold>(
+    problem: &Samples<Q>,
+    idx: &[usize],
+    fitted: &Fitted<Q::Vector>,
+) -> Result<Vec<(f64, usize)>, SplineError> {
+    let n = problem.points.len();
+    let curve = problem.build(idx, &fitted.keys)?;
+    let mut worst = vec![(0.0_f64, 0_usize); idx.len()];
+    let mut seg = 0;
+    for i in 0..n {
+        while seg + 1 < idx.len() && idx[seg + 1] <= i {
+            seg += 1;
+        }
+        // The last sample of an open curve belongs to the last segment.
+        let s = if !problem.closed && i == n - 1 { idx.len() - 2 } else { seg };
+        let mut consider = |d: f64, at: usize| {
+            if d > worst[s].0 {
+                worst[s] = (d, at);
+            }
+        };
+        consider(fitted.dist[i], i);
+        let next = if i + 1 < n {
+            Some(i + 1)
+        } else if problem.closed {
+            Some(0)
+        } else {
+            None
+        };
+        if let Some(j) = next {
+            let (a, b) = (&problem.points[i], &problem.points[j]);
+            let b = if problem.sign_free && a.dot(b) < 0.0 { b.clone() * -1.0 } else { b.clone() };
+            let t = 0.5 * (problem.times[i] + problem.times[i + 1]);
+            if let Ok(mid) = slerp_vector(a, &b, 0.5) {
+                let c = curve.eval(t).to_vector();
+                let c = if problem.sign_free && c.dot(&mid) < 0.0 { c * -1.0 } else { c };
+                let d = Q::from_vector_unchecked(c).dist(&Q::from_vector_unchecked(mid)) * problem.scale;
+                let at = if fitted.dist[i] >= fitted.dist[j] { i } else { j };
+                consider(d, at);
+            }
+        }
+    }
+    Ok(worst)
+}
+
+/// The fewest keys within `eps` (module docs), and the fit on them.
+pub(super) fn reduce<Q: Manifold>(
+    problem: &Samples<Q>,
+    eps: f64,
+    smoothing: &Smoothing,
+) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
+    let n = problem.points.len();
+    let mut idx = even_keys(problem, if problem.closed { 3 } else { 2 });
+    let mut iterations = 0;
+    let mut fitted = problem.fitted(&idx, smoothing, None)?;
+    iterations += fitted.report.iterations;
+    loop {
+        let worst = segment_errors(problem, &idx, &fitted)?;
+        let mut added: Vec<usize> = worst
+            .iter()
+            .filter(|(d, at)| *d > eps && !idx.contains(at))
+            .map(|&(_, at)| at)
+            .collect();
+        if added.is_empty() {
+            // Every violating segment's worst point is a key (cannot be refined further there):
+            // refine at its neighbours.
+            for (s, &(d, at)) in worst.iter().enumerate() {
+                if d > eps {
+                    let (lo, hi) = (idx[s], if s + 1 < idx.len() { idx[s + 1] } else { n });
+                    if hi > lo + 1 {
+                        added.push((lo + hi) / 2);
+                    }
+                    let _ = at;
+                }
+            }
+        }
+        if added.is_empty() {
+            break;
+        }
+        idx.extend(added);
+        idx.sort_unstable();
+        idx.dedup();
+        let start = idx.iter().map(|&i| problem.points[i].clone()).collect();
+        fitted = problem.fitted(&idx, smoothing, Some(start))?;
+        iterations += fitted.report.iterations;
+        if idx.len() == n {
+            break;
+        }
+    }
+    // The removal pass, from the keys whose neighbouring segments have the most room.
+    let worst = segment_errors(problem, &idx, &fitted)?;
+    let first_removable = 1;
+    let last_removable = if problem.closed { idx.len() } else { idx.len() - 1 };
+    let mut order: Vec<(f64, usize)> = (first_removable..last_removable)
+        .map(|k| (worst[k - 1].0.max(worst[k].0), idx[k]))
+        .collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let min = if problem.closed { 3 } else { 2 };
+    for (_, key) in order {
+        if idx.len() <= min {
+            break;
+        }
+        let trial: Vec<usize> = idx.iter().copied().filter(|&i| i != key).collect();
+        let start = trial.iter().map(|&i| problem.points[i].clone()).collect();
+        let Ok(f) = problem.fitted(&trial, smoothing, Some(start)) else {
+            continue;
+        };
+        iterations += f.report.iterations;
+        let w = segment_errors(problem, &trial, &f)?;
+        if w.iter().all(|&(d, _)| d <= eps) {
+            idx = trial;
+            fitted = f;
+        }
+    }
+    let worst = segment_errors(problem, &idx, &fitted)?;
+    let mut report = fitted.report;
+    report.max = worst.iter().fold(report.max, |m, &(d, _)| m.max(d));
+    report.iterations = iterations;
+    Ok((fitted.keys, report))
+}
