@@ -46,7 +46,7 @@ use crate::cubic::{CubicEnd, CubicSpline};
 use crate::error::{PointError, SplineError};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
-use solve::Samples;
+use solve::{Samples, Until};
 
 /// How much a fit smooths.
 #[derive(Clone, Debug, PartialEq)]
@@ -329,7 +329,7 @@ impl<Q: Manifold> Samples<Q> {
         let mut iterations = 0;
         let (lambda, solved) = match *smoothing {
             Smoothing::Lambda(l) => {
-                let s = self.solve(l, idx, start)?;
+                let s = self.solve(l, idx, start, Until::Converged)?;
                 (l, s)
             }
             Smoothing::Gcv => self.gcv(idx, start, &mut iterations)?,
@@ -364,16 +364,17 @@ impl<Q: Manifold> Samples<Q> {
         let mut keys = start;
         let score = |u: f64, keys: &mut Vec<Q::Vector>, iterations: &mut usize| -> Result<(f64, solve::Solved<Q>), SplineError> {
             let lambda = u.exp();
-            let s = self.solve(lambda, idx, keys.clone())?;
+            let s = self.solve(lambda, idx, keys.clone(), Until::Steps(2))?;
             *iterations += s.iterations;
             *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
             let tr = reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed);
             let denom = (n - tr).max(f64::MIN_POSITIVE);
             Ok((n * s.rss / (denom * denom), s))
         };
-        // A grid of half decades over the range, from the interpolating end (warm starts),
-        // then golden-section search between the neighbours of the best grid point.
-        let step = 0.5 * core::f64::consts::LN_10;
+        // A grid of decades over the range, from the interpolating end (warm starts), then
+        // golden-section search between the neighbours of the best grid point, to 1e-4 in
+        // ln λ (the fit moves by about 1e-4 of its change per unit of ln λ).
+        let step = core::f64::consts::LN_10;
         let count = (((hi - lo) / step).ceil() as usize).max(2);
         let mut grid = Vec::with_capacity(count + 1);
         for j in 0..=count {
@@ -384,43 +385,24 @@ impl<Q: Manifold> Samples<Q> {
         let best = (0..grid.len())
             .min_by(|&a, &b| grid[a].1.total_cmp(&grid[b].1))
             .unwrap_or(0);
-        let (mut a, mut b) = (
+        let (a, b) = (
             grid[best.saturating_sub(1)].0,
             grid[(best + 1).min(grid.len() - 1)].0,
         );
         let mut keys = grid[best].2.clone();
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        let mut x1 = b - r * (b - a);
-        let mut x2 = a + r * (b - a);
-        let (mut f1, _) = score(x1, &mut keys, iterations)?;
-        let (mut f2, _) = score(x2, &mut keys, iterations)?;
-        while b - a > 1e-6 {
-            if f1 <= f2 {
-                b = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = b - r * (b - a);
-                f1 = score(x1, &mut keys, iterations)?.0;
-            } else {
-                a = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = a + r * (b - a);
-                f2 = score(x2, &mut keys, iterations)?.0;
-            }
-        }
-        let u = 0.5 * (a + b);
-        let mut best_u = u;
-        let mut best_g = score(u, &mut keys, iterations)?.0;
-        // The golden-section search stays inside its bracket; keep the grid's best if better.
-        if grid[best].1 < best_g {
-            best_u = grid[best].0;
-            best_g = grid[best].1;
+        let (mut best_u, mut best_g) = (grid[best].0, grid[best].1);
+        let (u, g) = brent_min(a, b, grid[best].0, grid[best].1, 1e-4, |u| {
+            score(u, &mut keys, iterations).map(|(g, _)| g)
+        })?;
+        // Brent's search stays inside its bracket; keep the grid's best if it is better.
+        if g < best_g {
+            (best_u, best_g) = (u, g);
+        } else {
             keys = grid[best].2.clone();
         }
         let _ = best_g;
         let lambda = best_u.exp();
-        let s = self.solve(lambda, idx, keys)?;
+        let s = self.solve(lambda, idx, keys, Until::Converged)?;
         Ok((lambda, s))
     }
 
@@ -432,7 +414,7 @@ impl<Q: Manifold> Samples<Q> {
         let (mut a, mut b) = (lo - 4.0 * core::f64::consts::LN_10, hi + 8.0 * core::f64::consts::LN_10);
         let mut keys = start;
         let rms_at = |u: f64, keys: &mut Vec<Q::Vector>, iterations: &mut usize| -> Result<(f64, solve::Solved<Q>), SplineError> {
-            let s = self.solve(u.exp(), idx, keys.clone())?;
+            let s = self.solve(u.exp(), idx, keys.clone(), Until::Steps(2))?;
             *iterations += s.iterations;
             *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
             Ok(((s.rss / total).sqrt(), s))
@@ -467,6 +449,7 @@ impl<Q: Manifold> Samples<Q> {
             let (r, s) = rms_at(u, &mut keys, iterations)?;
             let f = r.max(f64::MIN_POSITIVE).ln() - target;
             if f.abs() <= 1e-10 || b - a <= 1e-13 * (1.0 + u.abs()) {
+                let s = self.solve(u.exp(), idx, s.curve.points().iter().map(Manifold::to_vector).collect(), Until::Converged)?;
                 return Ok((u.exp(), s));
             }
             if f < 0.0 {
@@ -509,6 +492,77 @@ impl<Q: Manifold> Samples<Q> {
         }
         (lo, hi)
     }
+}
+
+/// Brent's minimisation of `f` on `[a, b]` from the point `x` inside with value `fx`
+/// (golden-section steps and parabolic interpolation; Brent 1973, *Algorithms for Minimization
+/// without Derivatives*, ch. 5), to the absolute tolerance `tol`: the best point and value.
+fn brent_min(
+    mut a: f64,
+    mut b: f64,
+    x0: f64,
+    fx0: f64,
+    tol: f64,
+    mut f: impl FnMut(f64) -> Result<f64, SplineError>,
+) -> Result<(f64, f64), SplineError> {
+    const GOLD: f64 = 0.381_966_011_250_105_1;
+    let (mut x, mut w, mut v) = (x0, x0, x0);
+    let (mut fx, mut fw, mut fv) = (fx0, fx0, fx0);
+    let (mut d, mut e) = (0.0_f64, 0.0_f64);
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        let tol1 = tol;
+        let tol2 = 2.0 * tol1;
+        if (x - m).abs() <= tol2 - 0.5 * (b - a) {
+            break;
+        }
+        let mut golden = true;
+        if e.abs() > tol1 {
+            let r = (x - w) * (fx - fv);
+            let q = (x - v) * (fx - fw);
+            let mut p = (x - v) * q - (x - w) * r;
+            let mut q = 2.0 * (q - r);
+            if q > 0.0 {
+                p = -p;
+            }
+            q = q.abs();
+            if p.abs() < (0.5 * q * e).abs() && p > q * (a - x) && p < q * (b - x) {
+                e = d;
+                d = p / q;
+                let u = x + d;
+                if u - a < tol2 || b - u < tol2 {
+                    d = if x < m { tol1 } else { -tol1 };
+                }
+                golden = false;
+            }
+        }
+        if golden {
+            e = if x < m { b - x } else { a - x };
+            d = GOLD * e;
+        }
+        let u = if d.abs() >= tol1 { x + d } else { x + tol1.copysign(d) };
+        let fu = f(u)?;
+        if fu <= fx {
+            if u < x {
+                b = x;
+            } else {
+                a = x;
+            }
+            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
+        } else {
+            if u < x {
+                a = u;
+            } else {
+                b = u;
+            }
+            if fu <= fw || w == x {
+                (v, fv, w, fw) = (w, fw, u, fu);
+            } else if fu <= fv || v == x || v == w {
+                (v, fv) = (u, fu);
+            }
+        }
+    }
+    Ok((x, fx))
 }
 
 fn start_dim<Q: Manifold>(c: &CubicSpline<Q>) -> usize {

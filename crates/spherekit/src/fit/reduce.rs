@@ -5,13 +5,15 @@
 //! sample and of the samples' geodesic interpolation midway between samples.
 //!
 //! Greedy refinement, then a removal pass:
-//! 1. start from the two end samples (closed: three samples evenly spread);
+//! 1. start from the end samples (closed: three samples evenly spread) and a key wherever the
+//!    track has turned by half a radian since the last key (so that every segment's least-squares
+//!    problem starts near its solution);
 //! 2. fit on the keys; in every segment whose largest error (at its samples and midpoints)
 //!    exceeds `ε`, make the sample nearest the worst point a key; repeat until no segment
 //!    exceeds `ε` (each round at least halves the violating segments' spans, so the rounds are
 //!    O(log N), each an O(N) fit);
-//! 3. for each key in turn (interior keys of an open curve), from the one whose neighbouring
-//!    segments have the smallest errors, drop it if the fit without it is still within `ε`.
+//! 3. for the keys whose neighbouring segments have the smallest errors (at most 48 of them,
+//!    each trial a fit), drop a key if the fit without it is still within `ε`.
 //!
 //! The fit at each step is the least-squares cubic on the keys (λ = 0 unless given).
 
@@ -22,6 +24,10 @@ use crate::curve::Curve;
 use crate::error::SplineError;
 use crate::manifold::{Manifold, slerp_vector};
 
+/// The removal pass tries at most this many keys (each trial is a fit of all samples): the
+/// pass stays O(N) fits' worth of work.
+const REMOVAL_TRIALS: usize = 48;
+
 /// `m` keys among the samples, spread as evenly as the sample indices allow.
 pub(super) fn even_keys<Q: Manifold>(problem: &Samples<Q>, m: usize) -> Vec<usize> {
     let n = problem.points.len();
@@ -30,6 +36,25 @@ pub(super) fn even_keys<Q: Manifold>(problem: &Samples<Q>, m: usize) -> Vec<usiz
     } else {
         (0..m).map(|j| ((j * (n - 1)) as f64 / (m - 1) as f64).round() as usize).collect()
     };
+    idx.dedup();
+    idx
+}
+
+/// The starting keys: the ends (closed: three evenly spread samples) and a sample wherever the
+/// track has turned by half a radian since the last key.
+fn start_keys<Q: Manifold>(problem: &Samples<Q>) -> Vec<usize> {
+    let n = problem.points.len();
+    let mut idx = even_keys(problem, if problem.closed { 3 } else { 2 });
+    let mut last = 0;
+    for i in 1..n {
+        let (a, b) = (&problem.points[last], &problem.points[i]);
+        let turn = Q::from_vector_unchecked(a.clone()).dist(&Q::from_vector_unchecked(b.clone())) * problem.scale;
+        if turn > 0.5 {
+            idx.push(i);
+            last = i;
+        }
+    }
+    idx.sort_unstable();
     idx.dedup();
     idx
 }
@@ -86,7 +111,7 @@ pub(super) fn reduce<Q: Manifold>(
     smoothing: &Smoothing,
 ) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
     let n = problem.points.len();
-    let mut idx = even_keys(problem, if problem.closed { 3 } else { 2 });
+    let mut idx = start_keys(problem);
     let mut iterations = 0;
     let mut fitted = problem.fitted(&idx, smoothing, None)?;
     iterations += fitted.report.iterations;
@@ -132,7 +157,7 @@ pub(super) fn reduce<Q: Manifold>(
         .collect();
     order.sort_by(|a, b| a.0.total_cmp(&b.0));
     let min = if problem.closed { 3 } else { 2 };
-    for (_, key) in order {
+    for (_, key) in order.into_iter().take(REMOVAL_TRIALS) {
         if idx.len() <= min {
             break;
         }

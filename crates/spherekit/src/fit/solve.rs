@@ -31,12 +31,24 @@ use crate::manifold::{Manifold, exp_vector, geodesic_frame_sin_cos, renormalize}
 /// Gauss–Newton steps at most.
 const MAX_ITERATIONS: usize = 100;
 /// Converged when the decrease the linear model predicts is at most this fraction of the
-/// objective (the squared Newton decrement, relative).
-const DECREMENT: f64 = 1e-20;
+/// objective (the squared Newton decrement, relative): below the objective's own rounding.
+/// The step is then still taken when it does not increase the objective.
+pub(crate) const DECREMENT: f64 = 1e-15;
+/// How a solve stops.
+#[derive(Clone, Copy)]
+pub(crate) enum Until {
+    /// Converged ([`DECREMENT`]); an error after [`MAX_ITERATIONS`].
+    Converged,
+    /// After this many Gauss–Newton steps (or converged before): the fits a search for λ tries
+    /// from the keys of a nearby λ, whose score needs the objective to about 1e-10 of itself,
+    /// which one or two steps from there give; the chosen λ's fit is then finished to
+    /// convergence.
+    Steps(usize),
+}
 /// The central-difference step, radians (scaled by the velocity's size for velocities).
 const STEP: f64 = 1e-6;
-/// A predicted decrease below this fraction of the objective is within the rounding of the
-/// objective itself: a line search that finds no decrease there ends the iteration.
+/// A predicted decrease below this fraction of the objective is close to the rounding of the
+/// objective: a line search that finds no decrease there ends the iteration.
 const ROUNDING: f64 = 1e-12;
 
 /// The samples of a fit and how distances are measured.
@@ -144,7 +156,13 @@ impl<P: Manifold> Samples<P> {
     /// The least-squares cubic on the key times of `idx` (sample indices; the first sample's
     /// always, and the last's when open) for the smoothing parameter `lambda`, from the keys
     /// `p` (vectors of the points).
-    pub(crate) fn solve(&self, lambda: f64, idx: &[usize], mut p: Vec<P::Vector>) -> Result<Solved<P>, SplineError> {
+    pub(crate) fn solve(
+        &self,
+        lambda: f64,
+        idx: &[usize],
+        mut p: Vec<P::Vector>,
+        until: Until,
+    ) -> Result<Solved<P>, SplineError> {
         let mut dist = vec![0.0; self.points.len()];
         let mut curve = self.build(idx, &p)?;
         let (mut rss, mut energy) = self.evaluate(idx, &curve, &mut dist);
@@ -211,7 +229,7 @@ impl<P: Manifold> Samples<P> {
             if !found && !converged && predicted > ROUNDING * objective {
                 return Err(no_convergence(iterations, objective));
             }
-            if converged || !found {
+            if converged || !found || matches!(until, Until::Steps(k) if iterations >= k) {
                 break;
             }
             if iterations >= MAX_ITERATIONS {
