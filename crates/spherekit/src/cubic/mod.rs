@@ -834,8 +834,8 @@ impl<V: Ambient> Segment<V> {
     #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
     pub(crate) fn local(&self, s: f64) -> Local<V> {
         let v = self.tangent(s);
-        let w = ((self.c.clone() * (3.0 * s) + self.b.clone() * 2.0) * s + self.a.clone())
-            * self.inv_h;
+        let w =
+            ((self.c.clone() * (3.0 * s) + self.b.clone() * 2.0) * s + self.a.clone()) * self.inv_h;
         let p = &self.start;
         let rho = v.length();
         let (sn, cs) = math::sin_cos(rho);

@@ -161,16 +161,27 @@ impl<P: Manifold> CubicSpline<P> {
         #[cfg(feature = "compact")]
         let (keys, report) = {
             use crate::sm::SmPoint;
-            let vectors = vectors.iter().map(|v| crate::ambient::VecN::new(v.to_vec())).collect();
+            let vectors = vectors
+                .iter()
+                .map(|v| crate::ambient::VecN::new(v.to_vec()))
+                .collect();
             let (keys, report) = fit::<SmPoint>(vectors, times, options, closed, P::SPEED_SCALE)?;
             let like = samples[0].to_vector();
-            let keys: Vec<P::Vector> = keys.iter().map(|k| like.with_coords(k.as_slice())).collect();
+            let keys: Vec<P::Vector> = keys
+                .iter()
+                .map(|k| like.with_coords(k.as_slice()))
+                .collect();
             (keys, report)
         };
         #[cfg(not(feature = "compact"))]
         let (keys, report) = fit::<P>(vectors, times, options, closed, P::SPEED_SCALE)?;
         let points = keys.into_iter().map(P::from_vector_unchecked).collect();
-        let curve = Self::try_new(points, Some(report.key_times.clone()), CubicEnd::Natural, closed)?;
+        let curve = Self::try_new(
+            points,
+            Some(report.key_times.clone()),
+            CubicEnd::Natural,
+            closed,
+        )?;
         Ok((curve, report))
     }
 }
@@ -211,7 +222,10 @@ fn fit<Q: Manifold>(
         Some(w) if w.len() != n => {
             return Err(invalid(
                 "weights",
-                format!("must have one weight per sample: {n} samples, got {}", w.len()),
+                format!(
+                    "must have one weight per sample: {n} samples, got {}",
+                    w.len()
+                ),
             ));
         }
         Some(w) => {
@@ -311,7 +325,11 @@ pub(crate) struct Fitted<V> {
 
 impl<Q: Manifold> Samples<Q> {
     /// The fit on the keys `idx` with the given smoothing, and its report.
-    pub(crate) fn fit_on(&self, idx: &[usize], smoothing: &Smoothing) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
+    pub(crate) fn fit_on(
+        &self,
+        idx: &[usize],
+        smoothing: &Smoothing,
+    ) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
         let f = self.fitted(idx, smoothing, None)?;
         Ok((f.keys, f.report))
     }
@@ -340,8 +358,15 @@ impl<Q: Manifold> Samples<Q> {
         let (rss, _) = self.evaluate(idx, &solved.curve, &mut dist);
         let total: f64 = self.weights.iter().sum();
         let dim = start_dim(&solved.curve);
-        let edf = all.then(|| (dim - 1) as f64 * reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed));
-        let keys: Vec<Q::Vector> = solved.curve.points().iter().map(Manifold::to_vector).collect();
+        let edf = all.then(|| {
+            (dim - 1) as f64 * reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed)
+        });
+        let keys: Vec<Q::Vector> = solved
+            .curve
+            .points()
+            .iter()
+            .map(Manifold::to_vector)
+            .collect();
         Ok(Fitted {
             keys,
             report: FitReport {
@@ -358,11 +383,19 @@ impl<Q: Manifold> Samples<Q> {
     }
 
     /// λ minimising the generalised cross-validation score, and the fit there.
-    fn gcv(&self, idx: &[usize], start: Vec<Q::Vector>, iterations: &mut usize) -> Result<(f64, solve::Solved<Q>), SplineError> {
+    fn gcv(
+        &self,
+        idx: &[usize],
+        start: Vec<Q::Vector>,
+        iterations: &mut usize,
+    ) -> Result<(f64, solve::Solved<Q>), SplineError> {
         let n = self.points.len() as f64;
         let (lo, hi) = self.lambda_range();
         let mut keys = start;
-        let score = |u: f64, keys: &mut Vec<Q::Vector>, iterations: &mut usize| -> Result<(f64, solve::Solved<Q>), SplineError> {
+        let score = |u: f64,
+                     keys: &mut Vec<Q::Vector>,
+                     iterations: &mut usize|
+         -> Result<(f64, solve::Solved<Q>), SplineError> {
             let lambda = u.exp();
             let s = self.solve(lambda, idx, keys.clone(), Until::Steps(2))?;
             *iterations += s.iterations;
@@ -375,6 +408,11 @@ impl<Q: Manifold> Samples<Q> {
         // golden-section search between the neighbours of the best grid point, to 1e-4 in
         // ln λ (the fit moves by about 1e-4 of its change per unit of ln λ).
         let step = core::f64::consts::LN_10;
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a count of decades between finite logarithms, at most a few hundred"
+        )]
         let count = (((hi - lo) / step).ceil() as usize).max(2);
         let mut grid = Vec::with_capacity(count + 1);
         for j in 0..=count {
@@ -407,13 +445,25 @@ impl<Q: Manifold> Samples<Q> {
     }
 
     /// λ whose weighted RMS residual is `sigma`, and the fit there.
-    fn rms_target(&self, idx: &[usize], start: Vec<Q::Vector>, sigma: f64, iterations: &mut usize) -> Result<(f64, solve::Solved<Q>), SplineError> {
+    fn rms_target(
+        &self,
+        idx: &[usize],
+        start: Vec<Q::Vector>,
+        sigma: f64,
+        iterations: &mut usize,
+    ) -> Result<(f64, solve::Solved<Q>), SplineError> {
         let total: f64 = self.weights.iter().sum();
         let (lo, hi) = self.lambda_range();
         // The range widened: below it the fit interpolates, above it it is the limit geodesic.
-        let (mut a, mut b) = (lo - 4.0 * core::f64::consts::LN_10, hi + 8.0 * core::f64::consts::LN_10);
+        let (mut a, mut b) = (
+            lo - 4.0 * core::f64::consts::LN_10,
+            hi + 8.0 * core::f64::consts::LN_10,
+        );
         let mut keys = start;
-        let rms_at = |u: f64, keys: &mut Vec<Q::Vector>, iterations: &mut usize| -> Result<(f64, solve::Solved<Q>), SplineError> {
+        let rms_at = |u: f64,
+                      keys: &mut Vec<Q::Vector>,
+                      iterations: &mut usize|
+         -> Result<(f64, solve::Solved<Q>), SplineError> {
             let s = self.solve(u.exp(), idx, keys.clone(), Until::Steps(2))?;
             *iterations += s.iterations;
             *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
@@ -425,13 +475,17 @@ impl<Q: Manifold> Samples<Q> {
         if sigma < ra {
             return Err(invalid(
                 "smoothing",
-                format!("the target rms {sigma:e} rad is below the residual of the least-squares fit on these keys, {ra:e} rad"),
+                format!(
+                    "the target rms {sigma:e} rad is below the residual of the least-squares fit on these keys, {ra:e} rad"
+                ),
             ));
         }
         if sigma > rb {
             return Err(invalid(
                 "smoothing",
-                format!("the target rms {sigma:e} rad is above the residual of the best constant-speed geodesic, {rb:e} rad"),
+                format!(
+                    "the target rms {sigma:e} rad is above the residual of the best constant-speed geodesic, {rb:e} rad"
+                ),
             ));
         }
         // Illinois on f(u) = ln rms(u) − ln σ, bracketed.
@@ -449,7 +503,12 @@ impl<Q: Manifold> Samples<Q> {
             let (r, s) = rms_at(u, &mut keys, iterations)?;
             let f = r.max(f64::MIN_POSITIVE).ln() - target;
             if f.abs() <= 1e-10 || b - a <= 1e-13 * (1.0 + u.abs()) {
-                let s = self.solve(u.exp(), idx, s.curve.points().iter().map(Manifold::to_vector).collect(), Until::Converged)?;
+                let s = self.solve(
+                    u.exp(),
+                    idx,
+                    s.curve.points().iter().map(Manifold::to_vector).collect(),
+                    Until::Converged,
+                )?;
                 return Ok((u.exp(), s));
             }
             if f < 0.0 {
@@ -468,7 +527,12 @@ impl<Q: Manifold> Samples<Q> {
                 side = 1;
             }
         }
-        Err(SplineError::Solve(crate::error::SolveError::NoConvergence { iterations: 200, residual: f64::NAN }))
+        Err(SplineError::Solve(
+            crate::error::SolveError::NoConvergence {
+                iterations: 200,
+                residual: f64::NAN,
+            },
+        ))
     }
 
     /// A range of `ln λ` over which the fit goes from nearly interpolating (`tr A ≥ N − 0.1`)
@@ -540,7 +604,11 @@ fn brent_min(
             e = if x < m { b - x } else { a - x };
             d = GOLD * e;
         }
-        let u = if d.abs() >= tol1 { x + d } else { x + tol1.copysign(d) };
+        let u = if d.abs() >= tol1 {
+            x + d
+        } else {
+            x + tol1.copysign(d)
+        };
         let fu = f(u)?;
         if fu <= fx {
             if u < x {

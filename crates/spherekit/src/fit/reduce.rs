@@ -34,7 +34,10 @@ pub(super) fn even_keys<Q: Manifold>(problem: &Samples<Q>, m: usize) -> Vec<usiz
     let mut idx: Vec<usize> = if problem.closed {
         (0..m).map(|j| (j * n) / m).collect()
     } else {
-        (0..m).map(|j| ((j * (n - 1)) as f64 / (m - 1) as f64).round() as usize).collect()
+        // The nearest integer to j(n − 1)/(m − 1), in integers.
+        (0..m)
+            .map(|j| (2 * j * (n - 1) + (m - 1)) / (2 * (m - 1)))
+            .collect()
     };
     idx.dedup();
     idx
@@ -48,7 +51,8 @@ fn start_keys<Q: Manifold>(problem: &Samples<Q>) -> Vec<usize> {
     let mut last = 0;
     for i in 1..n {
         let (a, b) = (&problem.points[last], &problem.points[i]);
-        let turn = Q::from_vector_unchecked(a.clone()).dist(&Q::from_vector_unchecked(b.clone())) * problem.scale;
+        let turn = Q::from_vector_unchecked(a.clone()).dist(&Q::from_vector_unchecked(b.clone()))
+            * problem.scale;
         if turn > 0.5 {
             idx.push(i);
             last = i;
@@ -74,7 +78,11 @@ fn segment_errors<Q: Manifold>(
             seg += 1;
         }
         // The last sample of an open curve belongs to the last segment.
-        let s = if !problem.closed && i == n - 1 { idx.len() - 2 } else { seg };
+        let s = if !problem.closed && i == n - 1 {
+            idx.len() - 2
+        } else {
+            seg
+        };
         let mut consider = |d: f64, at: usize| {
             if d > worst[s].0 {
                 worst[s] = (d, at);
@@ -90,13 +98,26 @@ fn segment_errors<Q: Manifold>(
         };
         if let Some(j) = next {
             let (a, b) = (&problem.points[i], &problem.points[j]);
-            let b = if problem.sign_free && a.dot(b) < 0.0 { b.clone() * -1.0 } else { b.clone() };
+            let b = if problem.sign_free && a.dot(b) < 0.0 {
+                b.clone() * -1.0
+            } else {
+                b.clone()
+            };
             let t = 0.5 * (problem.times[i] + problem.times[i + 1]);
             if let Ok(mid) = slerp_vector(a, &b, 0.5) {
                 let c = curve.eval(t).to_vector();
-                let c = if problem.sign_free && c.dot(&mid) < 0.0 { c * -1.0 } else { c };
-                let d = Q::from_vector_unchecked(c).dist(&Q::from_vector_unchecked(mid)) * problem.scale;
-                let at = if fitted.dist[i] >= fitted.dist[j] { i } else { j };
+                let c = if problem.sign_free && c.dot(&mid) < 0.0 {
+                    c * -1.0
+                } else {
+                    c
+                };
+                let d = Q::from_vector_unchecked(c).dist(&Q::from_vector_unchecked(mid))
+                    * problem.scale;
+                let at = if fitted.dist[i] >= fitted.dist[j] {
+                    i
+                } else {
+                    j
+                };
                 consider(d, at);
             }
         }
@@ -151,7 +172,11 @@ pub(super) fn reduce<Q: Manifold>(
     // The removal pass, from the keys whose neighbouring segments have the most room.
     let worst = segment_errors(problem, &idx, &fitted)?;
     let first_removable = 1;
-    let last_removable = if problem.closed { idx.len() } else { idx.len() - 1 };
+    let last_removable = if problem.closed {
+        idx.len()
+    } else {
+        idx.len() - 1
+    };
     let mut order: Vec<(f64, usize)> = (first_removable..last_removable)
         .map(|k| (worst[k - 1].0.max(worst[k].0), idx[k]))
         .collect();

@@ -67,9 +67,8 @@ pub(crate) struct Samples<P: Manifold> {
 /// A converged fit on given key times.
 pub(crate) struct Solved<P: Manifold> {
     pub(crate) curve: CubicSpline<P>,
-    /// `Σ wᵢ d(c(tᵢ), yᵢ)²` and the energy `E` (both in the scaled units).
+    /// `Σ wᵢ d(c(tᵢ), yᵢ)²` (in the scaled units).
     pub(crate) rss: f64,
-    pub(crate) energy: f64,
     pub(crate) iterations: usize,
 }
 
@@ -104,9 +103,18 @@ impl<P: Manifold> Samples<P> {
     }
 
     /// The cubic through the keys `p` at the key times of `idx`.
-    pub(crate) fn build(&self, idx: &[usize], p: &[P::Vector]) -> Result<CubicSpline<P>, SplineError> {
+    pub(crate) fn build(
+        &self,
+        idx: &[usize],
+        p: &[P::Vector],
+    ) -> Result<CubicSpline<P>, SplineError> {
         let points = p.iter().cloned().map(P::from_vector_unchecked).collect();
-        CubicSpline::try_new(points, Some(self.key_times(idx)), CubicEnd::Natural, self.closed)
+        CubicSpline::try_new(
+            points,
+            Some(self.key_times(idx)),
+            CubicEnd::Natural,
+            self.closed,
+        )
     }
 
     /// The scaled residual vector `s·Log_y(c)` of a sample (the sign of `y` nearest `c` for
@@ -126,7 +134,14 @@ impl<P: Manifold> Samples<P> {
     }
 
     /// `Σ wᵢ d(c(tᵢ), yᵢ)²` for the samples of segment `k`, and each sample's distance.
-    fn segment_rss(&self, idx: &[usize], k: usize, g: &Segment<P::Vector>, end: &P::Vector, mut each: impl FnMut(usize, f64)) -> f64 {
+    fn segment_rss(
+        &self,
+        idx: &[usize],
+        k: usize,
+        g: &Segment<P::Vector>,
+        end: &P::Vector,
+        mut each: impl FnMut(usize, f64),
+    ) -> f64 {
         let (range, t0, t1) = self.segment_samples(idx, k);
         let h = t1 - t0;
         let mut sum = 0.0;
@@ -141,7 +156,12 @@ impl<P: Manifold> Samples<P> {
     }
 
     /// The objective's two parts at a built curve, and each sample's distance (into `dist`).
-    pub(crate) fn evaluate(&self, idx: &[usize], curve: &CubicSpline<P>, dist: &mut [f64]) -> (f64, f64) {
+    pub(crate) fn evaluate(
+        &self,
+        idx: &[usize],
+        curve: &CubicSpline<P>,
+        dist: &mut [f64],
+    ) -> (f64, f64) {
         let n = idx.len();
         let segments = curve.segments();
         let (mut rss, mut energy) = (0.0, 0.0);
@@ -170,7 +190,11 @@ impl<P: Manifold> Samples<P> {
         let d = dim - 1;
         let mut iterations = 0;
         if d == 0 {
-            return Ok(Solved { curve, rss, energy, iterations });
+            return Ok(Solved {
+                curve,
+                rss,
+                iterations,
+            });
         }
         let mut system = Kkt::new(idx.len(), d, self.closed);
         loop {
@@ -236,12 +260,19 @@ impl<P: Manifold> Samples<P> {
                 return Err(no_convergence(iterations, rss + lambda * energy));
             }
         }
-        Ok(Solved { curve, rss, energy, iterations })
+        Ok(Solved {
+            curve,
+            rss,
+            iterations,
+        })
     }
 
     /// Adds segment `k`'s residuals (Gauss–Newton normal equations) and its parts of the
     /// continuity rows at its two keys to the KKT system.
-    #[allow(clippy::too_many_arguments)]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "the segment's inputs, each a slice of the iteration's state"
+    )]
     fn linearise(
         &self,
         lambda: f64,
@@ -270,7 +301,12 @@ impl<P: Manifold> Samples<P> {
         // Samples are aligned with the current curve once (the sign of a rotation sample stays
         // fixed through the differences).
         let base = Segment::hermite(&p[k], &p[k1], &v[k], &v[k1], h);
-        let outputs = |p0: &P::Vector, v0: &P::Vector, p1: &P::Vector, v1: &P::Vector, out: &mut [f64]| -> bool {
+        let outputs = |p0: &P::Vector,
+                       v0: &P::Vector,
+                       p1: &P::Vector,
+                       v1: &P::Vector,
+                       out: &mut [f64]|
+         -> bool {
             let Some(g) = Segment::hermite(p0, p1, v0, v1, h) else {
                 return false;
             };
@@ -311,9 +347,17 @@ impl<P: Manifold> Samples<P> {
         let (mut plus, mut minus) = (vec![0.0; nout], vec![0.0; nout]);
         for col in 0..m {
             let (key, is_velocity, j) = (col / (2 * d), (col / d) % 2 == 1, col % d);
-            let (pk, vk) = if key == 0 { (&p[k], &v[k]) } else { (&p[k1], &v[k1]) };
+            let (pk, vk) = if key == 0 {
+                (&p[k], &v[k])
+            } else {
+                (&p[k1], &v[k1])
+            };
             let frame = if key == 0 { &frames[k] } else { &frames[k1] };
-            let eps = if is_velocity { STEP * vk.length().max(1.0) } else { STEP };
+            let eps = if is_velocity {
+                STEP * vk.length().max(1.0)
+            } else {
+                STEP
+            };
             let perturbed = |sign: f64| -> (P::Vector, P::Vector) {
                 if is_velocity {
                     (pk.clone(), vk.clone() + frame[j].clone() * (sign * eps))
@@ -328,9 +372,11 @@ impl<P: Manifold> Samples<P> {
             let (pp, vp) = perturbed(1.0);
             let (pm, vm) = perturbed(-1.0);
             let good = if key == 0 {
-                outputs(&pp, &vp, &p[k1], &v[k1], &mut plus) && outputs(&pm, &vm, &p[k1], &v[k1], &mut minus)
+                outputs(&pp, &vp, &p[k1], &v[k1], &mut plus)
+                    && outputs(&pm, &vm, &p[k1], &v[k1], &mut minus)
             } else {
-                outputs(&p[k], &v[k], &pp, &vp, &mut plus) && outputs(&p[k], &v[k], &pm, &vm, &mut minus)
+                outputs(&p[k], &v[k], &pp, &vp, &mut plus)
+                    && outputs(&p[k], &v[k], &pm, &vm, &mut minus)
             };
             if good && ok {
                 for r in 0..nout {
@@ -367,7 +413,13 @@ impl<P: Manifold> Samples<P> {
         let start_val = &value[nres..nres + d];
         let end_val = &value[nres + d..nres + 2 * d];
         let natural_start = !self.closed && k == 0;
-        system.add_constraint(k, k, if natural_start { 1.0 } else { -1.0 }, start_rows, start_val);
+        system.add_constraint(
+            k,
+            k,
+            if natural_start { 1.0 } else { -1.0 },
+            start_rows,
+            start_val,
+        );
         system.add_constraint(k1, k, 1.0, end_rows, end_val);
     }
 }
@@ -400,7 +452,10 @@ fn retract<V: Ambient>(p: &[V], frames: &[Vec<V>], x: &[f64], alpha: f64) -> Vec
 }
 
 fn no_convergence(iterations: usize, residual: f64) -> SplineError {
-    SplineError::Solve(SolveError::NoConvergence { iterations, residual })
+    SplineError::Solve(SolveError::NoConvergence {
+        iterations,
+        residual,
+    })
 }
 
 /// An orthonormal frame of the tangent space at `p`: the columns `i ≠ j` of the Householder
@@ -462,7 +517,13 @@ impl Kkt {
     }
 
     fn clear(&mut self) {
-        for v in [&mut self.a, &mut self.diag, &mut self.c, &mut self.rhs, &mut self.jtr] {
+        for v in [
+            &mut self.a,
+            &mut self.diag,
+            &mut self.c,
+            &mut self.rhs,
+            &mut self.jtr,
+        ] {
             v.fill(0.0);
         }
     }
@@ -522,8 +583,8 @@ impl Kkt {
                 }
             }
         }
-        for r in 0..d {
-            self.rhs[row * b + d2 + r] -= sign * value[r];
+        for (r, v) in value.iter().enumerate() {
+            self.rhs[row * b + d2 + r] -= sign * v;
         }
     }
 
@@ -540,7 +601,11 @@ impl Kkt {
         let mut predicted = 0.0;
         for k in 0..self.n {
             let xs = &x[k * b..k * b + d2];
-            predicted -= xs.iter().zip(&self.jtr[k * d2..(k + 1) * d2]).map(|(a, g)| a * g).sum::<f64>();
+            predicted -= xs
+                .iter()
+                .zip(&self.jtr[k * d2..(k + 1) * d2])
+                .map(|(a, g)| a * g)
+                .sum::<f64>();
             out.extend_from_slice(xs);
         }
         Some(Step { x: out, predicted })
