@@ -45,8 +45,8 @@ Three parts, each printed as a markdown table:
 2. Speed: `make_smoothing_spline(t, x)` (λ by GCV) on the three rotation-vector components of
    10⁴ and 10⁵ noisy samples (100 Hz over 100 s and 1 000 s of the wobble of part 1 without
    its turn, 1° of noise), wall clock of the three fits: best of 3 for 10⁴, one run for 10⁵
-   (one is about 40 s per component on the reference machine; `--repeat-large 3` for a best
-   of 3). Then spherekit's fit on the same samples with GCV and with λ given (the λ its GCV
+   (about a minute per component on a 2-core machine; `--repeat-large 3` for a best of 3,
+   `--repeat-large 0` to skip it). Then spherekit's fit on the same samples with GCV and with λ given (the λ its GCV
    chose), timed the same way.
 
 3. Key reduction: noise-free tracks of 2 000 samples (the S² and S³ truths of part 1 over 5 s,
@@ -59,7 +59,9 @@ Three parts, each printed as a markdown table:
    how many k in (k, 2k] exceed ε. Then spherekit's own reduction, `fit={"max_error": ε}`, its
    `fit_info["keys"]`.
 
-Deterministic (fixed seeds); about three minutes on a 2-core machine, most of it in part 2.
+The parts print in the order 1, 3, 2: the speed part, the slow one, comes last. Deterministic
+(fixed seeds); about four minutes on a 2-core machine, three of them scipy's fits of 10⁵ samples
+(under a minute with `--repeat-large 0`).
 """
 
 import argparse
