@@ -65,6 +65,12 @@ test-wheel:
 bench-python:
     bash scripts/setup-python.sh python scripts/bench_python.py
 
+# scripts/bench_fit.py's docstring says what it measures; `./run bench-fit --repeat-large 0`
+# skips the timing of 10⁵ samples (about three minutes of scipy)
+# Fitting benchmark: a known motion recovered from noisy samples (S3, S2), speed, key reduction
+bench-fit *args:
+    bash scripts/setup-python.sh python scripts/bench_fit.py {{args}}
+
 # API docs, warnings are errors
 doc:
     RUSTDOCFLAGS="-D warnings" cargo doc --workspace --all-features --no-deps --locked
