@@ -214,7 +214,10 @@ impl<P: Manifold> Samples<P> {
             if !(predicted.is_finite()) {
                 return Err(no_convergence(iterations, objective));
             }
-            let converged = predicted <= DECREMENT * objective || predicted <= 1e-300;
+            // The objective's rounding has an absolute part too: residuals of about 1e-14 rad
+            // (exact data, a fit through every sample) leave nothing to decrease.
+            let floor = 1e-28 * self.weights.iter().sum::<f64>();
+            let converged = predicted <= DECREMENT * objective + floor;
             // Backtracking: the full step, then halves, until the objective decreases by a
             // quarter of the predicted amount (once converged, the last step is taken when it
             // does not increase the objective).
@@ -250,7 +253,7 @@ impl<P: Manifold> Samples<P> {
             }
             // No decrease along the Gauss–Newton direction although the model predicts one
             // above rounding: stuck.
-            if !found && !converged && predicted > ROUNDING * objective {
+            if !found && !converged && predicted > ROUNDING * objective + floor {
                 return Err(no_convergence(iterations, objective));
             }
             if converged || !found || matches!(until, Until::Steps(k) if iterations >= k) {

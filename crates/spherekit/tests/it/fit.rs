@@ -572,3 +572,38 @@ fn bad_fit_input_is_a_typed_error() {
     let (c, report) = CubicSpline::try_fit(same, t.clone(), &FitOptions::default(), false).unwrap();
     assert!(report.rms == 0.0 && c.eval(t[5]).dist(&pts[0]) < 1e-15);
 }
+
+#[test]
+fn exact_samples_fit_without_residual_open_closed_and_by_gcv() {
+    // Samples on a smooth closed track with no noise: every smoothing fits them, to rounding.
+    let n = 24;
+    let mut t: Vec<f64> = (0..n).map(|i| 0.25 * f64::from(i)).collect();
+    t.push(6.0);
+    let tau = std::f64::consts::TAU;
+    let pts: Vec<S2Point> = t[..n as usize]
+        .iter()
+        .map(|&s| {
+            let a = tau * s / 6.0;
+            S2Point::try_new(DVec3::new(a.cos(), a.sin(), 0.5 + 0.2 * (2.0 * a).sin()))
+                .expect("a point")
+        })
+        .collect();
+    for (closed, times) in [(true, t.clone()), (false, t[..n as usize].to_vec())] {
+        for smoothing in [
+            Smoothing::Lambda(0.0),
+            Smoothing::Lambda(1e-6),
+            Smoothing::Gcv,
+        ] {
+            let options = FitOptions {
+                smoothing: Some(smoothing.clone()),
+                ..FitOptions::default()
+            };
+            let (_, report) = CubicSpline::try_fit(pts.clone(), times.clone(), &options, closed)
+                .unwrap_or_else(|e| panic!("closed {closed} {smoothing:?}: {e}"));
+            assert!(
+                report.max < 1e-3,
+                "closed {closed} {smoothing:?}: {report:?}"
+            );
+        }
+    }
+}
