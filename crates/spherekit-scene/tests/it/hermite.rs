@@ -341,3 +341,23 @@ fn space_and_body_rates_differ_only_by_the_frame() {
         .fold(0.0, f64::max);
     assert!(d < 1e-14, "{d:e}");
 }
+
+#[test]
+fn key_velocities_follow_point_edits() {
+    let scene = json!({ "space": "S2", "method": "cubic",
+        "points": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+        "params": { "velocities": [[0, 1, 0], [0, 0, 1], [1, 0, 0]] } });
+    let mut doc = spherekit_scene::Document::from_json(&scene.to_string()).unwrap();
+    doc.insert_point(0, 1, &[0.6, 0.8, 0.0]).unwrap();
+    assert_eq!(
+        doc.curve(0).unwrap()["params"]["velocities"],
+        json!([[0, 1, 0], [0.0, 0.0, 0.0], [0, 0, 1], [1, 0, 0]]),
+        "the new key at rest"
+    );
+    doc.remove_point(0, 3).unwrap();
+    assert_eq!(
+        doc.curve(0).unwrap()["params"]["velocities"],
+        json!([[0, 1, 0], [0.0, 0.0, 0.0], [0, 0, 1]])
+    );
+    assert_eq!(doc.curves().len(), 1);
+}
