@@ -343,6 +343,9 @@ def cases():
         yield f"gamma_s3_{name}", scene("S3", "gamma", pts, params={"gamma": g}, samples=129)
         yield f"gamma_s3_{name}_paper_example", scene(
             "S3", "gamma", pts, params={"gamma": g, "last_edge": "paper-example"}, samples=129)
+    # Keys with velocities (the cubic's params.velocities): ordinary, huge, tiny and zero rates,
+    # on degenerate keys, open and closed; on S3 angular velocities in either frame.
+    yield from hermite_cases()
     # Multi-curve scenes share the checks.
     yield "compare_s2_identical_keys_every_method", {
         "space": "S2",
@@ -350,6 +353,60 @@ def cases():
                    for m, sps in METHODS.items() if "S2" in sps],
         "samples": 33,
     }
+
+
+def tangent_rates(space, pts, scale, seed=1):
+    """A velocity at every point of `pts`: on S3 an angular velocity [x, y, z], elsewhere a
+    tangent vector (a fixed vector with its component along the point removed), times `scale`."""
+    out = []
+    for i, p in enumerate(pts):
+        a = 0.9 * i + seed
+        if space == "S3":
+            out.append([scale * math.cos(a), scale * 0.5 * math.sin(a), scale * 0.7])
+            continue
+        v = [math.cos(a + k) for k in range(len(p))]
+        dot = sum(x * y for x, y in zip(v, p))
+        out.append([scale * (x - dot * y) for x, y in zip(v, p)])
+    return out
+
+
+def hermite_cases():
+    """Yields (name, scene) for the cubic with a velocity at every key."""
+    for space in ALL_SPACES:
+        sp = space.lower()
+        pre = f"cubic_{sp}_velocities"
+        base = generic(space, 5)
+        frames = [{"frame": "space"}, {"frame": "body"}] if space == "S3" else [{}]
+        for frame in frames:
+            f = f"_{frame['frame']}" if frame else ""
+            for label, scale in [("", 1.0), ("_1e6", 1e6), ("_1e-300", 1e-300), ("_zero", 0.0)]:
+                params = {"velocities": tangent_rates(space, base, scale), **frame}
+                yield f"{pre}{f}{label}", scene(space, "cubic", base, params=params, samples=65)
+            params = {"velocities": tangent_rates(space, base, 1.0), **frame}
+            yield f"{pre}{f}_params_edge", scene(space, "cubic", base, params=params, eval_at=EDGE_PARAMS,
+                                                 knots=[3.0 * i / 4 for i in range(5)])
+            pts = base[:2] + [base[1]] + base[2:]
+            params = {"velocities": tangent_rates(space, pts, 1.0), **frame}
+            yield f"{pre}{f}_identical_keys", scene(space, "cubic", pts, params=params, samples=65)
+            p = base[0]
+            q = [-x for x in near(p, 1e-9, space)]
+            pts = [p, q] + base[2:]
+            params = {"velocities": tangent_rates(space, pts, 1.0), **frame}
+            yield f"{pre}{f}_near_antipodal_1e-9", scene(space, "cubic", pts, params=params, samples=65)
+            loop = ring(space, 5)
+            params = {"velocities": tangent_rates(space, loop, 1.0), **frame}
+            yield f"{pre}{f}_closed", scene(space, "cubic", loop, params=params, closed=True,
+                                            extrapolate="cycle", eval_at=EDGE_PARAMS)
+            if space == "S3":
+                # q and −q (canonicalised: the rate goes with the rotation), and a loop of one
+                # full turn (closed at −q₀), with rates.
+                pts = base[:2] + [[-x for x in base[1]]] + base[2:]
+                params = {"velocities": tangent_rates(space, pts, 1.0), **frame}
+                yield f"{pre}{f}_q_and_minus_q", scene(space, "cubic", pts, params=params, samples=65)
+                orbit = [rot([0.0, 0.0, 1.0], 2 * math.pi * i / 3) for i in range(3)]
+                params = {"velocities": [[0.0, 0.0, 2 * math.pi / 3]] * 3, **frame}
+                yield f"{pre}{f}_full_turn_orbit_3", scene(space, "cubic", orbit, params=params, closed=True,
+                                                          extrapolate="cycle", eval_at=EDGE_PARAMS)
 
 
 # Methods that need distinct consecutive points (a circle through three points, a corner).
@@ -578,6 +635,18 @@ def bad_cases():
         ("cubic_velocity_without_clamped", '{"space":"S2","method":"cubic","params":{"end_velocity":[0,0,1]},"points":[[1,0,0],[0,1,0]]}', 'params.end_velocity: applies with "end": "clamped" only'),
         ("cubic_velocity_nan", '{"space":"S3","method":"cubic","params":{"end":"clamped","start_velocity":[0,"x",0],"end_velocity":[0,0,1]},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.start_velocity: must be a list of finite numbers"),
         ("cubic_angular_velocity_length", '{"space":"S3","method":"cubic","params":{"end":"clamped","start_velocity":[0,0],"end_velocity":[0,0,1]},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.start_velocity: must be an angular velocity [x, y, z], got 2 numbers"),
+        ("cubic_velocities_wrong_count", '{"space":"S2","method":"cubic","params":{"velocities":[[0,0,1],[0,0,1]]},"points":[[1,0,0],[0,1,0],[1,1,0]]}', "params.velocities: must have one velocity per point: expected 3, got 2"),
+        ("cubic_velocities_nan_entry", '{"space":"S2","method":"cubic","params":{"velocities":[[0,0,1],[0,"NaN",1]]},"points":[[1,0,0],[0,1,0]]}', "params.velocities[1]: must be a list of finite numbers"),
+        ("cubic_velocities_1e400_entry", '{"space":"S2","method":"cubic","params":{"velocities":[[0,0,1],[0,1e400,1]]},"points":[[1,0,0],[0,1,0]]}', "params.velocities[1][1]: number out of range"),
+        ("cubic_velocities_not_a_list", '{"space":"S2","method":"cubic","params":{"velocities":1},"points":[[1,0,0],[0,1,0]]}', "params.velocities: must be a list of vectors, one per point"),
+        ("cubic_velocities_not_tangent", '{"space":"S2","method":"cubic","params":{"velocities":[[0,0,1],[0,1,0]]},"points":[[1,0,0],[0,1,0]]}', "params.velocities[1]: is not tangent to its key"),
+        ("cubic_velocities_wrong_dimension", '{"space":"S5","method":"cubic","params":{"velocities":[[0,1,0,0,0,0],[1,0,0]]},"points":[[1,0,0,0,0,0],[0,1,0,0,0,0]]}', "params.velocities[1]: has 3 numbers, not a vector of this sphere"),
+        ("cubic_velocities_with_clamped", '{"space":"S2","method":"cubic","params":{"velocities":[[0,0,1],[0,0,1]],"end":"clamped","start_velocity":[0,0,1],"end_velocity":[0,0,1]},"points":[[1,0,0],[0,1,0]]}', 'params.velocities: gives the velocity at every key, the ends\' too: it takes no "end" other than natural'),
+        ("cubic_velocities_with_end_velocity", '{"space":"S2","method":"cubic","params":{"velocities":[[0,0,1],[0,0,1]],"end_velocity":[0,0,1]},"points":[[1,0,0],[0,1,0]]}', "params.velocities: gives the velocity at every key"),
+        ("cubic_velocities_s3_body_not_angular", '{"space":"S3","method":"cubic","params":{"velocities":[[0,0,1],[0,1,0,0]],"frame":"body"},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.velocities[1]: must be an angular velocity [x, y, z], got 4 numbers"),
+        ("cubic_velocities_s3_space_nan", '{"space":"S3","method":"cubic","params":{"velocities":[[0,0,1],[0,null,1]],"frame":"space"},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.velocities[1]: must be a list of finite numbers"),
+        ("cubic_velocities_s3_full_turn_wrong_count", '{"space":"S3","method":"cubic","closed":true,"params":{"velocities":[[0,0,1],[0,0,1]]},"points":[[1,0,0,0],[0.5,0,0,0.8660254037844386],[-0.5,0,0,0.8660254037844386]]}', "params.velocities: must have one velocity per point: expected 3, got 2"),
+        ("cubic_frame_unknown", '{"space":"S3","method":"cubic","params":{"velocities":[[0,0,1],[0,0,1]],"frame":"world"},"points":[[1,0,0,0],[0.9,0.1,0,0]]}', "params.frame: must be one of: space, body"),
         ("cubic_knots_not_increasing", '{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0],[0,0,1]],"knots":[0,2,1]}', "knots[2] is not greater than knots[1]"),
         ("quaternion_order_unknown", '{"space":"S3","quaternion_order":"zyxw","method":"geodesic","points":[[1,0,0,0],[0,1,0,0]]}', 'quaternion_order: "zyxw" is not an order'),
         ("quaternion_order_on_s2", '{"space":"S2","quaternion_order":"xyzw","method":"geodesic","points":[[1,0,0],[0,1,0]]}', "quaternion_order: applies to S3 (quaternion) scenes only"),

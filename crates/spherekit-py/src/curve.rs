@@ -181,7 +181,8 @@ pub(crate) fn write_jets<P: Flat>(
 ///   angle on S3); `extrapolate`: `"hold"` (default), `"extend"`, `"cycle"` (closed),
 ///   `"error"` or `"segment"` (the open cubic), what the curve is outside `domain`.
 /// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`,
-///   `smoothness=3` for the Cⁿ blends…).
+///   `smoothness=3` for the Cⁿ blends, `velocities=rates` with `frame="body"` for the cubic
+///   through keys with rates…); arrays are taken as nested lists.
 ///
 /// `curve(t)` gives the points at the parameters `t` (a number or a 1-D array), `curve(t, 1)`
 /// and `curve(t, 2)` the first and second derivatives (ambient vectors). Outside `domain` the

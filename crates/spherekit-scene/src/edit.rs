@@ -11,6 +11,7 @@ use serde_json::{Map, Value, json};
 
 use crate::built::BuiltCurve;
 use crate::error::SceneError;
+use crate::params::ParamKind;
 use crate::registry::Method;
 use crate::scene::Scene;
 use crate::space::MAX_DIMENSION;
@@ -208,8 +209,9 @@ impl Document {
         })
     }
 
-    /// Inserts a point before `index` (`index` = count appends). The curve's knots and
-    /// per-joint parameter lists follow (see [`Document::remove_point`]).
+    /// Inserts a point before `index` (`index` = count appends). The curve's knots, per-joint
+    /// parameter lists and key velocities follow (see [`Document::remove_point`]); the new
+    /// point's velocity is zero (a key at rest).
     ///
     /// # Errors
     ///
@@ -231,7 +233,8 @@ impl Document {
     }
 
     /// Removes point `index` of curve `curve`. Its knot goes, and its entry of every
-    /// per-joint parameter list, as the method's registry entry lines them up with the points.
+    /// per-joint parameter list, as the method's registry entry lines them up with the points,
+    /// and its velocity (`params.velocities`).
     ///
     /// # Errors
     ///
@@ -624,8 +627,10 @@ enum PointEdit {
 /// per point and its knots one more (the time it returns to the first point). The entry at the matching position is removed, or
 /// one is inserted there: midway between its neighbours for `knots` (one spacing beyond an
 /// end), a copy of its neighbour for a parameter. A parameter list that would become empty
-/// becomes its last value (one number for every joint). Lists of another length, or of
-/// non-numbers, are left for the scene's validation to report.
+/// becomes its last value (one number for every joint). A list of vectors, one per point (the
+/// key velocities), loses the removed point's vector or gains a zero vector (of its neighbour's
+/// length) for the inserted one: zero is a velocity at every point. Lists of another length, or
+/// of other values, are left for the scene's validation to report.
 fn follow_points(
     curve: &mut Map<String, Value>,
     method: &Method,
@@ -644,18 +649,40 @@ fn follow_points(
     }
     if let Some(Value::Object(params)) = curve.get_mut("params") {
         for p in method.params {
-            let Some(per_joint) = p.per_joint else {
+            let (Some(expected), Some(value)) =
+                (p.per_point_count(count, closed), params.get_mut(p.name))
+            else {
                 continue;
             };
-            if let Some(value) = params.get_mut(p.name)
-                && let Value::Array(list) = value
-                && let Some(removed) =
-                    follow(list, false, per_joint.count_for(count, closed), count, edit)
+            let Value::Array(list) = value else { continue };
+            if p.kind == ParamKind::Vectors {
+                follow_vectors(list, count, edit);
+            } else if let Some(removed) = follow(list, false, expected, count, edit)
                 && list.is_empty()
             {
                 *value = Value::from(removed);
             }
         }
+    }
+}
+
+/// Applies `edit` to a list of one vector per point, `count` of them (see [`follow_points`]).
+fn follow_vectors(list: &mut Vec<Value>, count: usize, edit: PointEdit) {
+    if list.len() != count {
+        return;
+    }
+    match edit {
+        PointEdit::Insert(index) => {
+            let Some(Value::Array(near)) = list.get(index.min(count.saturating_sub(1))) else {
+                return;
+            };
+            let zero = Value::from(vec![0.0; near.len()]);
+            list.insert(index.min(count), zero);
+        }
+        PointEdit::Remove(index) if index < count => {
+            list.remove(index);
+        }
+        PointEdit::Remove(_) => {}
     }
 }
 

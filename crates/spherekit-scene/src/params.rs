@@ -24,7 +24,9 @@ pub struct Param {
     pub per_joint: Option<PerJoint>,
     /// The spaces it applies to.
     pub spaces: Spaces,
-    /// A solver setting rather than a shape parameter: the page gives it no control of its own.
+    /// A solver setting rather than a shape parameter, or a value too large for a form control
+    /// (a list of vectors): the page gives it no control of its own (its "params as JSON" box
+    /// edits it).
     pub advanced: bool,
     /// The setting it belongs to: `(parameter, value)` when it applies (and is needed) only
     /// while that choice parameter has that value (the cubic's end velocities with `end`
@@ -70,6 +72,10 @@ pub enum ParamKind {
     Choice(&'static [&'static str]),
     /// A vector of finite numbers (a velocity); absent by default.
     Vector,
+    /// A list of vectors of finite numbers, one per point (the velocity at every key); absent
+    /// by default. A closed S³ loop of an odd number of turns, built on its doubled keys,
+    /// takes the list twice ([`Param::per_point_count`]).
+    Vectors,
 }
 
 /// How a per-joint list lines up with the points: it has `points − 2·skip` entries, the first
@@ -176,6 +182,27 @@ impl Param {
         Self::of_kind(name, label, summary, ParamKind::Vector)
     }
 
+    /// A list of vectors of finite numbers, one per point, absent by default.
+    pub(crate) const fn vectors(
+        name: &'static str,
+        label: &'static str,
+        summary: &'static str,
+    ) -> Self {
+        Self::of_kind(name, label, summary, ParamKind::Vectors)
+    }
+
+    /// The length of the parameter's list when it has one entry per point or per joint (its
+    /// per-joint list, or a list of [`ParamKind::Vectors`]) for `points` points of an open or
+    /// closed curve; `None` for a parameter of one value.
+    #[must_use]
+    pub fn per_point_count(&self, points: usize, closed: bool) -> Option<usize> {
+        match (self.per_joint, self.kind) {
+            (Some(per_joint), _) => Some(per_joint.count_for(points, closed)),
+            (None, ParamKind::Vectors) => Some(points),
+            (None, _) => None,
+        }
+    }
+
     /// Accepts a per-joint list too.
     pub(crate) const fn per_joint(mut self, skip: usize, first: usize) -> Self {
         self.per_joint = Some(PerJoint { skip, first });
@@ -200,7 +227,7 @@ impl Param {
         self
     }
 
-    /// A solver setting.
+    /// A solver setting, or a value for the "params as JSON" box only.
     pub(crate) const fn advanced(mut self) -> Self {
         self.advanced = true;
         self
@@ -236,6 +263,7 @@ impl Param {
                 json!({ "default": choices[0], "choices": choices }),
             ),
             ParamKind::Vector => ("vector", json!({ "default": null })),
+            ParamKind::Vectors => ("vectors", json!({ "default": null })),
         };
         let mut out = json!({
             "name": self.name,
@@ -468,13 +496,30 @@ impl<'a> Params<'a> {
     /// A list of finite numbers, or `None` when absent.
     pub(crate) fn vector(&mut self, name: &'static str) -> Result<Option<Vec<f64>>, SceneError> {
         let _ = self.schema(name);
+        self.get(name)
+            .map(|v| finite_numbers(v, &format!("params.{name}")))
+            .transpose()
+    }
+
+    /// A list of lists of finite numbers (one vector per point; the count is the
+    /// construction's to check), or `None` when absent.
+    pub(crate) fn vectors(
+        &mut self,
+        name: &'static str,
+    ) -> Result<Option<Vec<Vec<f64>>>, SceneError> {
+        let _ = self.schema(name);
         let Some(v) = self.get(name) else {
             return Ok(None);
         };
-        let bad = || field_error(format!("params.{name}"), "must be a list of finite numbers");
-        let list = v.as_array().ok_or_else(bad)?;
+        let list = v.as_array().ok_or_else(|| {
+            field_error(
+                format!("params.{name}"),
+                "must be a list of vectors, one per point",
+            )
+        })?;
         list.iter()
-            .map(|x| x.as_f64().filter(|x| x.is_finite()).ok_or_else(bad))
+            .enumerate()
+            .map(|(i, x)| finite_numbers(x, &format!("params.{name}[{i}]")))
             .collect::<Result<Vec<_>, _>>()
             .map(Some)
     }
@@ -489,4 +534,15 @@ impl<'a> Params<'a> {
             )),
         }
     }
+}
+
+/// `value` as a list of finite numbers, or an error on `field`.
+fn finite_numbers(value: &Value, field: &str) -> Result<Vec<f64>, SceneError> {
+    let bad = || field_error(field, "must be a list of finite numbers");
+    value
+        .as_array()
+        .ok_or_else(bad)?
+        .iter()
+        .map(|x| x.as_f64().filter(|x| x.is_finite()).ok_or_else(bad))
+        .collect()
 }

@@ -5,9 +5,10 @@
 //! loop of rotations they are ([`spherekit::RotationLoop`]), for every method that closes.
 //!
 //! The method's own build function builds the doubled loop (keys `q₀ … q_{n−1}, −q₀ … −q_{n−1}`,
-//! knots continued by one period, every per-joint list twice); the loop keeps its first half,
-//! and so do the extras the method derives: its controls and auxiliary vertices, its knots and
-//! its per-joint report (the doubled loop's are its own followed by their antipodes).
+//! knots continued by one period, every per-joint list and the key velocities twice); the loop
+//! keeps its first half, and so do the extras the method derives: its controls and auxiliary
+//! vertices, its knots and its per-joint report (the doubled loop's are its own followed by
+//! their antipodes).
 
 use serde_json::{Map, Value};
 use spherekit::{Curve, RotationLoop, UnitQuat};
@@ -97,8 +98,10 @@ fn input<'a>(
     }
 }
 
-/// The parameters for the doubled keys: every per-joint list twice. `None` when a per-joint
-/// list has not one entry per key (the method then reports the count for the keys given).
+/// The parameters for the doubled keys: every list with an entry per key (per-joint lists, the
+/// key velocities) twice. `None` when such a list has not one entry per key (the method then
+/// reports the count for the keys given). An angular velocity is one of the rotation, the same
+/// at `q` and `−q`, so the second copy of the key velocities is the first.
 fn doubled_params(
     method: &'static Method,
     params: &Map<String, Value>,
@@ -106,12 +109,12 @@ fn doubled_params(
 ) -> Option<Map<String, Value>> {
     let mut out = params.clone();
     for param in method.params {
-        let (Some(per_joint), Some(Value::Array(list))) =
-            (param.per_joint, out.get_mut(param.name))
+        let (Some(count), Some(Value::Array(list))) =
+            (param.per_point_count(n, true), out.get_mut(param.name))
         else {
             continue;
         };
-        if list.len() != per_joint.count_for(n, true) {
+        if list.len() != count {
             return None;
         }
         list.extend_from_within(..);

@@ -655,3 +655,73 @@ fn render_refuses_extensions_it_cannot_write() {
     }
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn sample_of_keys_with_rates_passes_through_every_key_with_its_rate() {
+    // The example scene: attitudes with the body rates a gyroscope measured at each.
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/hermite-rates.json"
+    );
+    let scene: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let knots = scene["knots"].as_array().unwrap();
+    let at: Vec<String> = knots.iter().map(Value::to_string).collect();
+    let out = spherekit(
+        &[
+            "sample",
+            path,
+            "--deriv",
+            "--frame",
+            "body",
+            "--at",
+            &at.join(","),
+        ],
+        "",
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let out: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = |v: &Value| -> Vec<Vec<f64>> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|r| {
+                r.as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap())
+                    .collect()
+            })
+            .collect()
+    };
+    let (keys, rates) = (rows(&scene["points"]), rows(&scene["params"]["velocities"]));
+    let (points, omega) = (rows(&out["points"]), rows(&out["angular_velocity"]));
+    assert_eq!(points.len(), keys.len());
+    for (k, (key, p)) in keys.iter().zip(&points).enumerate() {
+        let norm = key.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let d = key
+            .iter()
+            .zip(p)
+            .map(|(a, b)| (a / norm - b).abs())
+            .fold(0.0, f64::max);
+        assert!(d < 1e-12, "key {k}: {d:e}");
+        let d = rates[k]
+            .iter()
+            .zip(&omega[k])
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(d < 1e-12, "rate {k}: {d:e}");
+    }
+    assert_eq!(out["info"]["iterations"], 0, "no solve");
+    // One rate short: one line naming the field.
+    let mut short = scene.clone();
+    short["params"]["velocities"].as_array_mut().unwrap().pop();
+    let line = reject(&short.to_string(), &[]);
+    assert_eq!(
+        line,
+        "error: params.velocities: must have one velocity per point: expected 4, got 3"
+    );
+}

@@ -362,6 +362,8 @@ pub fn extreme_scene(u: &mut Unstructured<'_>) -> ArbResult<Value> {
                 let n = if parsed == Space::S3 { 3 } else { dim };
                 json!((0..n).map(|_| coord(u)).collect::<ArbResult<Vec<_>>>()?)
             }
+            // One vector per point (advanced, so not reached while the schema says so).
+            ParamKind::Vectors => continue,
         };
         params.insert(p.name.into(), value);
     }

@@ -337,7 +337,7 @@ fn every_parameter_default_is_accepted() {
                 ParamKind::Integer { default, .. } => json!(default),
                 ParamKind::Bool { default } => json!(default),
                 ParamKind::Choice(choices) => json!(choices[0]),
-                ParamKind::Vector => continue,
+                ParamKind::Vector | ParamKind::Vectors => continue,
             };
             let scene = json!({ "space": space, "method": m.id, "points": points(space, 6),
                                 "params": { p.name: value } });

@@ -914,17 +914,27 @@ pub(crate) struct Local<V> {
 }
 
 /// Checks a velocity at `key` and returns its tangent projection, or what is wrong with it.
+///
+/// The test `|p·v| ≤ TANGENT_TOLERANCE·|v|` is homogeneous in `v`, so it is made on `v` divided
+/// by its largest coordinate: a tiny velocity (`|v|²` below the smallest normal double, where
+/// `|v|` would round to 0 and the rounding of `p·v` would fail it) is judged as its direction.
 fn tangent_at<P: Manifold>(key: &P, v: &P::Vector) -> Result<P::Vector, &'static str> {
     let p = key.to_vector();
     if v.dim() != p.dim() {
-        Err("has the wrong number of coordinates")
-    } else if !v.is_finite() {
-        Err("has a non-finite coordinate")
-    } else if p.dot(v).abs() > TANGENT_TOLERANCE * v.length() {
-        Err("is not tangent to its key")
-    } else {
-        Ok(key.project_tangent(v))
+        return Err("has the wrong number of coordinates");
     }
+    if !v.is_finite() {
+        return Err("has a non-finite coordinate");
+    }
+    let largest = v.as_slice().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    if largest > 0.0 {
+        let coords: Vec<f64> = v.as_slice().iter().map(|x| x / largest).collect();
+        let u = v.with_coords(&coords);
+        if p.dot(&u).abs() > TANGENT_TOLERANCE * u.length() {
+            return Err("is not tangent to its key");
+        }
+    }
+    Ok(key.project_tangent(v))
 }
 
 /// Checks a clamped velocity at `key` and returns its tangent projection.

@@ -173,3 +173,20 @@ fn hermite_bad_velocities_name_the_key() {
         Err(e) => assert!(!e.to_string().is_empty()),
     }
 }
+
+#[test]
+fn hermite_tiny_velocities_are_judged_by_their_direction() {
+    // |v|² underflows below 1e-154: the tangency test is made on the direction of v, so a
+    // tangent velocity of size 1e-300 is taken and a radial one still rejected.
+    let mut rng = Rng::new(8);
+    let keys = rng.walk_s2(3, 0.5);
+    let mut vel = velocities(&mut rng, &keys, 1e-300);
+    let c = CubicSpline::try_hermite(keys.clone(), vel.clone(), None, false).expect("tangent");
+    assert!((c.eval(1.0).as_dvec3() - keys[1].as_dvec3()).length() < 1e-15);
+    vel[1] = keys[1].as_dvec3() * 1e-300;
+    let err = CubicSpline::try_hermite(keys, vel, None, false).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "the velocity at point 1 is not tangent to its key"
+    );
+}
