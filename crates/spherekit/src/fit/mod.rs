@@ -397,7 +397,7 @@ impl<Q: Manifold> Samples<Q> {
                      iterations: &mut usize|
          -> Result<(f64, solve::Solved<Q>), SplineError> {
             let lambda = u.exp();
-            let s = self.solve(lambda, idx, keys.clone(), Until::Steps(2))?;
+            let s = self.solve(lambda, idx, keys.clone(), Until::Steps(1))?;
             *iterations += s.iterations;
             *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
             let tr = reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed);
@@ -464,7 +464,7 @@ impl<Q: Manifold> Samples<Q> {
                       keys: &mut Vec<Q::Vector>,
                       iterations: &mut usize|
          -> Result<(f64, solve::Solved<Q>), SplineError> {
-            let s = self.solve(u.exp(), idx, keys.clone(), Until::Steps(2))?;
+            let s = self.solve(u.exp(), idx, keys.clone(), Until::Steps(1))?;
             *iterations += s.iterations;
             *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
             Ok(((s.rss / total).sqrt(), s))
