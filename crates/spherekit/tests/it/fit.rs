@@ -607,3 +607,50 @@ fn exact_samples_fit_without_residual_open_closed_and_by_gcv() {
         }
     }
 }
+
+#[test]
+fn a_repeated_sample_weighs_twice() {
+    // Times increase strictly, so the repeat is a hair later; as the gap closes the fit tends
+    // to the fit with that sample's weight doubled (the gap's segment, of energy ~ |Δ|²/δ³,
+    // ties the two keys together).
+    let (t, _, pts, _) = great_circle(16, 13);
+    let pts: Vec<S2Point> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            S2Point::try_new(
+                p.as_dvec3() + DVec3::new(0.0, 0.15 * noise(i, 21), 0.1 * noise(i, 22)),
+            )
+            .expect("a point")
+        })
+        .collect();
+    let k = 7;
+    let mut w = vec![1.0; 16];
+    w[k] = 2.0;
+    let options = |w: Vec<f64>| FitOptions {
+        smoothing: Some(Smoothing::Lambda(0.05)),
+        weights: Some(w),
+        keys: FitKeys::Samples,
+    };
+    let (doubled, _) =
+        CubicSpline::try_fit(pts.clone(), t.clone(), &options(w), false).expect("a fit");
+    let mut errors = Vec::new();
+    for gap in [1e-3, 1e-4] {
+        let mut t2 = t.clone();
+        t2.insert(k + 1, t[k] + gap);
+        let mut p2 = pts.clone();
+        p2.insert(k + 1, pts[k]);
+        let (repeated, _) =
+            CubicSpline::try_fit(p2, t2, &options(vec![1.0; 17]), false).expect("a fit");
+        let worst = t
+            .iter()
+            .map(|&s| repeated.eval(s).dist(&doubled.eval(s)))
+            .fold(0.0, f64::max);
+        errors.push(worst);
+    }
+    // First order in the gap.
+    assert!(
+        errors[1] < 3e-5 && errors[1] < 0.2 * errors[0],
+        "{errors:?}"
+    );
+}
