@@ -472,13 +472,7 @@ def recovery():
 # ---- speed --------------------------------------------------------------------------------------
 
 
-def best_of(f, repeat):
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - t0)
-    return min(times)
+from bench_python import best as best_of  # noqa: E402 (the scripts' one timing helper)
 
 
 def time_spherekit_fit(t, quats, repeat):
