@@ -46,7 +46,7 @@ use crate::cubic::{CubicEnd, CubicSpline};
 use crate::error::{PointError, SplineError};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
-use solve::{Samples, Until};
+use solve::{Samples, Solved, Start, Until};
 
 /// How much a fit smooths.
 #[derive(Clone, Debug, PartialEq)]
@@ -347,7 +347,7 @@ impl<Q: Manifold> Samples<Q> {
         let mut iterations = 0;
         let (lambda, solved) = match *smoothing {
             Smoothing::Lambda(l) => {
-                let s = self.solve(l, idx, start, Until::Converged)?;
+                let s = self.solve(l, idx, Start::Keys(start), Until::Converged)?;
                 (l, s)
             }
             Smoothing::Gcv => self.gcv(idx, start, &mut iterations)?,
@@ -382,31 +382,43 @@ impl<Q: Manifold> Samples<Q> {
         })
     }
 
+    /// One trial of a search for λ: a Gauss–Newton step from the previous trial's fit (or the
+    /// starting keys), which it replaces; its residual.
+    fn trial(
+        &self,
+        lambda: f64,
+        idx: &[usize],
+        warm: &mut Start<Q>,
+        iterations: &mut usize,
+    ) -> Result<f64, SplineError> {
+        let start = core::mem::replace(warm, Start::Keys(Vec::new()));
+        let s = self.solve(lambda, idx, start, Until::Steps(1))?;
+        *iterations += s.iterations;
+        let rss = s.rss;
+        *warm = Start::Fit(s);
+        Ok(rss)
+    }
+
     /// λ minimising the generalised cross-validation score, and the fit there.
     fn gcv(
         &self,
         idx: &[usize],
         start: Vec<Q::Vector>,
         iterations: &mut usize,
-    ) -> Result<(f64, solve::Solved<Q>), SplineError> {
+    ) -> Result<(f64, Solved<Q>), SplineError> {
         let n = self.points.len() as f64;
         let (lo, hi) = self.lambda_range();
-        let mut keys = start;
-        let score = |u: f64,
-                     keys: &mut Vec<Q::Vector>,
-                     iterations: &mut usize|
-         -> Result<(f64, solve::Solved<Q>), SplineError> {
+        let mut warm = Start::Keys(start);
+        let mut score = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
             let lambda = u.exp();
-            let s = self.solve(lambda, idx, keys.clone(), Until::Steps(1))?;
-            *iterations += s.iterations;
-            *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
+            let rss = self.trial(lambda, idx, warm, iterations)?;
             let tr = reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed);
             let denom = (n - tr).max(f64::MIN_POSITIVE);
-            Ok((n * s.rss / (denom * denom), s))
+            Ok(n * rss / (denom * denom))
         };
-        // A grid of decades over the range, from the interpolating end (warm starts), then
-        // golden-section search between the neighbours of the best grid point, to 1e-4 in
-        // ln λ (the fit moves by about 1e-4 of its change per unit of ln λ).
+        // A grid of decades over the range, from the interpolating end (each trial starting
+        // from the previous one's fit), then Brent's method between the neighbours of the best
+        // grid point, to 1e-4 in ln λ.
         let step = core::f64::consts::LN_10;
         #[expect(
             clippy::cast_possible_truncation,
@@ -415,32 +427,31 @@ impl<Q: Manifold> Samples<Q> {
         )]
         let count = (((hi - lo) / step).ceil() as usize).max(2);
         let mut grid = Vec::with_capacity(count + 1);
+        let mut best: Option<(usize, f64, Start<Q>)> = None;
         for j in 0..=count {
             let u = lo + (hi - lo) * j as f64 / count as f64;
-            let (g, _) = score(u, &mut keys, iterations)?;
-            grid.push((u, g, keys.clone()));
+            let g = score(u, &mut warm)?;
+            grid.push(u);
+            if best.as_ref().is_none_or(|b| g < b.1)
+                && let Start::Fit(s) = &warm
+            {
+                best = Some((j, g, Start::Fit(s.clone())));
+            }
         }
-        let best = (0..grid.len())
-            .min_by(|&a, &b| grid[a].1.total_cmp(&grid[b].1))
-            .unwrap_or(0);
-        let (a, b) = (
-            grid[best.saturating_sub(1)].0,
-            grid[(best + 1).min(grid.len() - 1)].0,
-        );
-        let mut keys = grid[best].2.clone();
-        let (mut best_u, mut best_g) = (grid[best].0, grid[best].1);
-        let (u, g) = brent_min(a, b, grid[best].0, grid[best].1, 1e-4, |u| {
-            score(u, &mut keys, iterations).map(|(g, _)| g)
-        })?;
+        let Some((j, grid_g, Start::Fit(grid_fit))) = best else {
+            unreachable!("a trial leaves its fit, and the grid has points")
+        };
+        let (a, b) = (grid[j.saturating_sub(1)], grid[(j + 1).min(grid.len() - 1)]);
+        let mut warm = Start::Fit(grid_fit.clone());
+        let (u, g) = brent_min(a, b, grid[j], grid_g, 1e-4, |u| score(u, &mut warm))?;
         // Brent's search stays inside its bracket; keep the grid's best if it is better.
-        if g < best_g {
-            (best_u, best_g) = (u, g);
+        let (u, start) = if g <= grid_g {
+            (u, warm)
         } else {
-            keys = grid[best].2.clone();
-        }
-        let _ = best_g;
-        let lambda = best_u.exp();
-        let s = self.solve(lambda, idx, keys, Until::Converged)?;
+            (grid[j], Start::Fit(grid_fit))
+        };
+        let lambda = u.exp();
+        let s = self.solve(lambda, idx, start, Until::Converged)?;
         Ok((lambda, s))
     }
 
@@ -451,7 +462,7 @@ impl<Q: Manifold> Samples<Q> {
         start: Vec<Q::Vector>,
         sigma: f64,
         iterations: &mut usize,
-    ) -> Result<(f64, solve::Solved<Q>), SplineError> {
+    ) -> Result<(f64, Solved<Q>), SplineError> {
         let total: f64 = self.weights.iter().sum();
         let (lo, hi) = self.lambda_range();
         // The range widened: below it the fit interpolates, above it it is the limit geodesic.
@@ -459,19 +470,16 @@ impl<Q: Manifold> Samples<Q> {
             lo - 4.0 * core::f64::consts::LN_10,
             hi + 8.0 * core::f64::consts::LN_10,
         );
-        let mut keys = start;
-        let rms_at = |u: f64,
-                      keys: &mut Vec<Q::Vector>,
-                      iterations: &mut usize|
-         -> Result<(f64, solve::Solved<Q>), SplineError> {
-            let s = self.solve(u.exp(), idx, keys.clone(), Until::Steps(1))?;
-            *iterations += s.iterations;
-            *keys = s.curve.points().iter().map(Manifold::to_vector).collect();
-            Ok(((s.rss / total).sqrt(), s))
+        let mut warm = Start::Keys(start);
+        let mut rms_at = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
+            Ok((self.trial(u.exp(), idx, warm, iterations)? / total).sqrt())
         };
-        let (ra, _) = rms_at(a, &mut keys, iterations)?;
-        let low_keys = keys.clone();
-        let (rb, _) = rms_at(b, &mut keys, iterations)?;
+        let ra = rms_at(a, &mut warm)?;
+        let Start::Fit(low) = &warm else {
+            unreachable!("a trial leaves its fit")
+        };
+        let low = Start::Fit(low.clone());
+        let rb = rms_at(b, &mut warm)?;
         if sigma < ra {
             return Err(invalid(
                 "smoothing",
@@ -491,7 +499,7 @@ impl<Q: Manifold> Samples<Q> {
         // Illinois on f(u) = ln rms(u) − ln σ, bracketed.
         let target = sigma.ln();
         let (mut fa, mut fb) = (ra.max(f64::MIN_POSITIVE).ln() - target, rb.ln() - target);
-        keys = low_keys;
+        warm = low;
         let mut side = 0;
         for _ in 0..200 {
             let u = if fa.is_finite() && fa != fb {
@@ -500,15 +508,10 @@ impl<Q: Manifold> Samples<Q> {
                 0.5 * (a + b)
             };
             let u = if u > a && u < b { u } else { 0.5 * (a + b) };
-            let (r, s) = rms_at(u, &mut keys, iterations)?;
+            let r = rms_at(u, &mut warm)?;
             let f = r.max(f64::MIN_POSITIVE).ln() - target;
             if f.abs() <= 1e-10 || b - a <= 1e-13 * (1.0 + u.abs()) {
-                let s = self.solve(
-                    u.exp(),
-                    idx,
-                    s.curve.points().iter().map(Manifold::to_vector).collect(),
-                    Until::Converged,
-                )?;
+                let s = self.solve(u.exp(), idx, warm, Until::Converged)?;
                 return Ok((u.exp(), s));
             }
             if f < 0.0 {

@@ -64,11 +64,20 @@ pub(crate) struct Samples<P: Manifold> {
     pub(crate) sign_free: bool,
 }
 
-/// A converged fit on given key times.
+/// Where a solve starts: keys, or a fit on the same keys for another λ (whose curve, residual
+/// and energy do not depend on λ, so the search for λ does not rebuild them).
+pub(crate) enum Start<P: Manifold> {
+    Keys(Vec<P::Vector>),
+    Fit(Solved<P>),
+}
+
+/// A fit on given key times.
+#[derive(Clone)]
 pub(crate) struct Solved<P: Manifold> {
     pub(crate) curve: CubicSpline<P>,
-    /// `Σ wᵢ d(c(tᵢ), yᵢ)²` (in the scaled units).
+    /// `Σ wᵢ d(c(tᵢ), yᵢ)²` and the energy `E` (both in the scaled units).
     pub(crate) rss: f64,
+    pub(crate) energy: f64,
     pub(crate) iterations: usize,
 }
 
@@ -180,12 +189,21 @@ impl<P: Manifold> Samples<P> {
         &self,
         lambda: f64,
         idx: &[usize],
-        mut p: Vec<P::Vector>,
+        start: Start<P>,
         until: Until,
     ) -> Result<Solved<P>, SplineError> {
         let mut dist = vec![0.0; self.points.len()];
-        let mut curve = self.build(idx, &p)?;
-        let (mut rss, mut energy) = self.evaluate(idx, &curve, &mut dist);
+        let (mut p, mut curve, mut rss, mut energy) = match start {
+            Start::Keys(p) => {
+                let curve = self.build(idx, &p)?;
+                let (rss, energy) = self.evaluate(idx, &curve, &mut dist);
+                (p, curve, rss, energy)
+            }
+            Start::Fit(s) => {
+                let p = s.curve.points().iter().map(Manifold::to_vector).collect();
+                (p, s.curve, s.rss, s.energy)
+            }
+        };
         let dim = p[0].dim();
         let d = dim - 1;
         let mut iterations = 0;
@@ -193,6 +211,7 @@ impl<P: Manifold> Samples<P> {
             return Ok(Solved {
                 curve,
                 rss,
+                energy,
                 iterations,
             });
         }
@@ -266,6 +285,7 @@ impl<P: Manifold> Samples<P> {
         Ok(Solved {
             curve,
             rss,
+            energy,
             iterations,
         })
     }
