@@ -309,8 +309,9 @@ impl Document {
     }
 
     /// Gives curve `curve` another method: parameters the new method does not have go, knots
-    /// go unless the new method takes as many for these points, and `"extrapolate":
-    /// "segment"` goes unless the new method's curve has end segments to continue.
+    /// go unless the new method takes as many for these points, `"fit"` goes unless the new
+    /// method fits samples, and `"extrapolate": "segment"` goes unless the new method's curve
+    /// has end segments to continue.
     ///
     /// # Errors
     ///
@@ -330,6 +331,9 @@ impl Document {
         c.insert("method".into(), json!(new.id));
         if !keep_knots {
             c.remove("knots");
+        }
+        if !crate::fit::applies_to(new) {
+            c.remove("fit");
         }
         if let Some(Value::Object(p)) = c.get_mut("params") {
             p.retain(|k, _| {
@@ -549,7 +553,7 @@ fn curve_doc_mut(
 }
 
 /// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 10] = [
+const CURVE_FIELDS: [&str; 11] = [
     "method",
     "points",
     "knots",
@@ -560,6 +564,7 @@ const CURVE_FIELDS: [&str; 10] = [
     "extrapolate",
     "color",
     "label",
+    "fit",
 ];
 
 /// The description of curve `i` in a document (the curve's own fields, wherever they sit).
@@ -624,8 +629,9 @@ enum PointEdit {
 /// per point and its knots one more (the time it returns to the first point). The entry at the matching position is removed, or
 /// one is inserted there: midway between its neighbours for `knots` (one spacing beyond an
 /// end), a copy of its neighbour for a parameter. A parameter list that would become empty
-/// becomes its last value (one number for every joint). Lists of another length, or of
-/// non-numbers, are left for the scene's validation to report.
+/// becomes its last value (one number for every joint). A fit's `weights` (one per point) follow
+/// as a parameter list does. Lists of another length, or of non-numbers, are left for the
+/// scene's validation to report.
 fn follow_points(
     curve: &mut Map<String, Value>,
     method: &Method,
@@ -656,6 +662,11 @@ fn follow_points(
                 *value = Value::from(removed);
             }
         }
+    }
+    if let Some(Value::Object(fit)) = curve.get_mut("fit")
+        && let Some(Value::Array(weights)) = fit.get_mut("weights")
+    {
+        follow(weights, false, count, count, edit);
     }
 }
 

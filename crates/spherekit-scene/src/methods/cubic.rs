@@ -165,7 +165,7 @@ fn build_curve(mut input: Input<'_>) -> Result<BuiltCurve, SceneError> {
     }))
 }
 
-fn finish<P: ScenePoint>(curve: CubicSpline<P>, points: Vec<P>) -> Built<P> {
+pub(crate) fn finish<P: ScenePoint>(curve: CubicSpline<P>, points: Vec<P>) -> Built<P> {
     let info = curve.solve_info();
     let knots = curve.knots().to_vec();
     Built::new(curve, points)
