@@ -20,7 +20,8 @@
 //! [`spherekit::closes_at_antipode`]) is refused.
 //!
 //! The built curve keeps a [`FitRecord`]: the sample times, the fitted keys, each sample's
-//! residual and the core's [`FitReport`]; `info.fit` reports the same numbers as JSON.
+//! residual and the core's [`FitReport`]; `info.fit` reports the same numbers as JSON
+//! (without the keys, which are the curve's values at `key_times`).
 
 use serde_json::{Map, Value, json};
 use spherekit::{CubicSpline, FitKeys, FitOptions, FitReport, Smoothing, SplineError, UnitQuat};
@@ -47,10 +48,10 @@ pub const FIT_FIELDS: [(&str, &str); 4] = [
     ("keys", "the number of keys among the sample times"),
 ];
 
-/// The most samples a fit takes. The smoothing spline is O(N) per solve, but key reduction
-/// (`max_error`) refits once per key it tries to drop, O(N·keys); a scene of more samples is
-/// refused with an error on `points` rather than left to run for minutes.
-pub const MAX_FIT_SAMPLES: usize = 100_000;
+/// The most samples a fit takes. Every solve is O(N), but "gcv" and `{"rms": σ}` solve for
+/// dozens of λ and key reduction (`max_error`) refits once per key it tries: a scene of more
+/// samples is refused with an error on `points` rather than left to run for minutes.
+pub const MAX_FIT_SAMPLES: usize = 10_000;
 
 /// Whether `method` takes a `fit` field.
 pub(crate) fn applies_to(method: &Method) -> bool {
@@ -76,10 +77,9 @@ pub struct FitRecord<P> {
     pub report: FitReport,
 }
 
-/// The report as `info.fit`: `lambda`, `rms`, `max`, `keys`, `key_times`, `iterations`, and
-/// `edf` when the fit has one.
-#[must_use]
-pub fn fit_json(report: &FitReport) -> Value {
+/// The report as `info.fit`: `lambda`, `rms`, `max`, `keys`, `key_times`, `iterations`, `edf`
+/// when the fit has one, and `residuals`, one per sample.
+fn fit_json(report: &FitReport, residuals: &[f64]) -> Value {
     let mut out = Map::new();
     out.insert("lambda".into(), json!(report.lambda));
     out.insert("rms".into(), json!(report.rms));
@@ -90,6 +90,7 @@ pub fn fit_json(report: &FitReport) -> Value {
     if let Some(edf) = report.edf {
         out.insert("edf".into(), json!(edf));
     }
+    out.insert("residuals".into(), json!(residuals));
     Value::Object(out)
 }
 
@@ -284,12 +285,12 @@ fn fitted<P: FitPoint>(
     let (curve, report) =
         CubicSpline::try_fit(samples.clone(), times.clone(), options, closed).map_err(fit_error)?;
     let keys = curve.points().to_vec();
-    let residuals = samples
+    let residuals: Vec<f64> = samples
         .iter()
         .zip(&times)
         .map(|(y, &t)| P::residual(y, &spherekit::Curve::eval(&curve, t)))
         .collect();
-    let info = fit_json(&report);
+    let info = fit_json(&report, &residuals);
     let mut built = cubic::finish(curve, samples).with_info("fit", info);
     built.fit = Some(FitRecord {
         times,

@@ -76,7 +76,7 @@ pub use built::{
 };
 pub use edit::{Document, EditError};
 pub use error::{SceneError, one_line};
-pub use fit::{FIT_FIELDS, FitRecord, MAX_FIT_SAMPLES, fit_json};
+pub use fit::{FIT_FIELDS, FitRecord, MAX_FIT_SAMPLES};
 pub use params::{Param, ParamKind, PerJoint};
 pub use registry::{KnotRule, METHODS, MIN_CLOSED_POINTS, Method, Spaces, registry_json};
 pub use scene::{

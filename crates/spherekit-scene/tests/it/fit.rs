@@ -63,6 +63,7 @@ fn a_fit_keeps_its_samples_times_residuals_and_report() {
     assert_eq!(info["keys"], json!(30));
     assert_eq!(info["key_times"], json!(report.key_times));
     assert_eq!(info["edf"], json!(report.edf.unwrap()));
+    assert_eq!(info["residuals"], json!(fit.residuals));
     assert_eq!(curves[0].fit_report(), Some(report));
 }
 
