@@ -308,12 +308,7 @@ fn fit_error(e: SplineError) -> SceneError {
         SplineError::InvalidParameter { name, reason } => {
             field_error(format!("fit.{name}"), reason)
         }
-        SplineError::Solve(e) => field_error(
-            "fit",
-            format!(
-                "the fit did not converge ({e}): samples too far apart for their times, or time spacings of very different sizes"
-            ),
-        ),
+        SplineError::Solve(e) => field_error("fit", format!("the fit did not converge ({e})")),
         e => SceneError::Spline(e),
     }
 }
