@@ -41,7 +41,7 @@ DICT_TOKENS = ["space", "method", "points", "knots", "params", "canonicalize", "
                "parametrization", "native", "arclength", "extrapolate", "hold", "extend", "cycle",
                "error", "segment",
                "quaternion_order", "xyzw", "samples", "eval_at", "curves", "view", "color",
-               "label", "camera", "plot", "speed", "omega", "none", "plot_time", "normalized",
+               "label", "fit", "gcv", "rms", "camera", "plot", "speed", "omega", "none", "plot_time", "normalized",
                "frames", "omega_frame", "body", "axes", "accuracy", "legend", "title", "S1", "S2",
                "S3", "S5"]
 DICT_LITERALS = ["1e-9", "1e300", "-1e300", "1e-300", "0.999999999", "-1", "true", "false"]
@@ -56,6 +56,7 @@ def fuzz_dict():
         for p in m["params"]:
             words.append(p["name"])
             words += p.get("choices", [])
+        words += [f["name"] for f in m.get("fit") or []]
     seen = []
     for w in words:
         if w not in seen:
@@ -499,6 +500,7 @@ def expect_err(name):
 BAD = "tests/robustness/bad"
 S2 = '"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0],[0,0,1]]'
 S3 = '"space":"S3","method":"squad","points":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]'
+FIT = '"space":"S2","method":"cubic","points":[[1,0,0],[0.98,0.2,0],[0.92,0.39,0],[0.83,0.56,0],[0.7,0.72,0]],"knots":[0,0.1,0.2,0.3,0.4]'
 
 
 def bad_cases():
@@ -652,6 +654,31 @@ def bad_cases():
         ("quaternion_order_on_s2", '{"space":"S2","quaternion_order":"xyzw","method":"geodesic","points":[[1,0,0],[0,1,0]]}', "quaternion_order: applies to S3 (quaternion) scenes only"),
         ("arc_blend_unknown_timing", '{"space":"S2","method":"arc-blend","params":{"timing":"fast"},"points":[[1,0,0],[0,1,0],[0,0,1]]}', "params.timing: must be one of: auto, book, arc-length, uniform"),
         ("gamma_last_edge_unknown", '{"space":"S3","method":"gamma","points":[[1,0,0,0],[0.9,0.1,0,0],[0.8,0.2,0.1,0],[0.7,0.3,0.2,0.1]],"params":{"last_edge":"paper"}}', "params.last_edge: must be one of: formula, paper-example"),
+        # A cubic fitted to samples ("fit"): every option's bad values name the option.
+        ("fit_weights_negative", '{' + FIT + ',"fit":{"weights":[1,1,-1,1,1]}}', "fit.weights[2]: must be a positive finite number, got -1"),
+        ("fit_weights_zero", '{' + FIT + ',"fit":{"weights":[1,0,1,1,1]}}', "fit.weights[1]: must be a positive finite number, got 0"),
+        ("fit_weights_string", '{' + FIT + ',"fit":{"weights":[1,1,1,"1",1]}}', 'fit.weights[3]: must be a positive finite number, got "1"'),
+        ("fit_weights_count", '{' + FIT + ',"fit":{"weights":[1,1]}}', "fit.weights: must have one weight per sample: 5 points, got 2"),
+        ("fit_weights_nan_literal", '{' + FIT + ',"fit":{"weights":[1,1,NaN,1,1]}}', "invalid scene JSON"),
+        ("fit_lambda_negative", '{' + FIT + ',"fit":{"smoothing":-0.5}}', "fit.smoothing: λ must be a finite number ≥ 0, got -0.5"),
+        ("fit_smoothing_unknown", '{' + FIT + ',"fit":{"smoothing":"auto"}}', 'fit.smoothing: must be a number λ ≥ 0, "gcv" or {"rms": σ}'),
+        ("fit_rms_zero", '{' + FIT + ',"fit":{"smoothing":{"rms":0}}}', "fit.smoothing: the target rms must be a positive finite number of radians, got 0"),
+        ("fit_rms_negative", '{' + FIT + ',"fit":{"smoothing":{"rms":-1}}}', "fit.smoothing: the target rms must be a positive finite number of radians, got -1"),
+        ("fit_max_error_zero", '{' + FIT + ',"fit":{"max_error":0}}', "fit.max_error: must be a positive finite number of radians, got 0"),
+        ("fit_max_error_negative", '{' + FIT + ',"fit":{"max_error":-1e-3}}', "fit.max_error: must be a positive finite number of radians"),
+        ("fit_keys_too_few", '{' + FIT + ',"fit":{"keys":1}}', "fit.keys: must be between 2 and the number of samples, 5; got 1"),
+        ("fit_keys_too_many", '{' + FIT + ',"fit":{"keys":6}}', "fit.keys: must be between 2 and the number of samples, 5; got 6"),
+        ("fit_keys_negative", '{' + FIT + ',"fit":{"keys":-3}}', "fit.keys: must be a whole number of keys"),
+        ("fit_keys_and_max_error", '{' + FIT + ',"fit":{"keys":3,"max_error":0.1}}', 'fit: give "keys" or "max_error", not both'),
+        ("fit_gcv_with_keys", '{' + FIT + ',"fit":{"smoothing":"gcv","keys":3}}', 'fit.smoothing: "gcv" needs a key at every sample'),
+        ("fit_unknown_key", '{' + FIT + ',"fit":{"lambda":1}}', "fit.lambda: unknown fit option; known: smoothing, weights, max_error, keys"),
+        ("fit_not_object", '{' + FIT + ',"fit":true}', "fit: must be an object"),
+        ("fit_on_geodesic", '{"space":"S2","method":"geodesic","points":[[1,0,0],[0,1,0]],"fit":{}}', 'fit: method "geodesic" does not fit samples: use "method": "cubic"'),
+        ("fit_without_knots", '{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0]],"fit":{}}', 'knots: are needed with "fit"'),
+        ("fit_knot_count", '{' + FIT.replace(',0.4]', ']') + ',"fit":{}}', "knots: expected 5 knots, got 4"),
+        ("fit_clamped_end", '{' + FIT + ',"params":{"end":"clamped"},"fit":{}}', 'params.end: does not apply with "fit"'),
+        ("fit_closed_s3_odd_turn", '{"space":"S3","method":"cubic","closed":true,"points":[[1,0,0,0],[0.5,0,0,0.866],[-0.5,0,0,0.866]],"knots":[0,1,2,3],"fit":{}}', "closed: the samples make a loop of an odd number of turns"),
+        ("fit_in_curves_list", '{"space":"S2","curves":[{' + FIT[13:] + ',"fit":{"keys":0}}]}', "curves[0].fit.keys: must be between 2"),
     ]
 
 

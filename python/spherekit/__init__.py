@@ -8,7 +8,8 @@ layer over them.
 - :class:`Curve` — any registered method (``spherekit.methods()``) on any sphere.
 - :class:`RotationSpline`, :class:`Slerp` — drop-ins for ``scipy.spatial.transform``'s
   classes of the same names, quaternions and all (scipy is optional: without it, rotations are
-  ``(n, 4)`` quaternion arrays).
+  ``(n, 4)`` quaternion arrays); :class:`SmoothRotationSpline` — the smoothing spline of noisy
+  rotations, called as ``RotationSpline``.
 - :func:`sample`, :func:`render`, :func:`render_png` — whole JSON scenes, as the
   ``spherekit`` CLI takes them; :func:`methods` — the method registry.
 
@@ -30,12 +31,13 @@ one-line message (the CLI's for scenes).
 from ._curve import Curve
 from ._spherekit import __version__ as __version__
 from ._spherekit import methods, render, render_png, sample
-from ._scipy import RotationSpline, Slerp
+from ._scipy import RotationSpline, Slerp, SmoothRotationSpline
 
 __all__ = [
     "Curve",
     "RotationSpline",
     "Slerp",
+    "SmoothRotationSpline",
     "methods",
     "render",
     "render_png",

@@ -1,10 +1,11 @@
 # Copyright 2026 the Spherekit Authors
 # SPDX-License-Identifier: Apache-2.0 OR MIT
-"""Drop-ins for ``scipy.spatial.transform.RotationSpline`` and ``Slerp``.
+"""Drop-ins for ``scipy.spatial.transform.RotationSpline`` and ``Slerp``, and
+``SmoothRotationSpline``, the smoothing spline of noisy rotations called as they are.
 
 The argument checks and their ``ValueError`` messages are scipy's (1.17); the curves are the
-Rust ``CubicSpline`` (with scipy's end condition) and ``GeodesicSpline``, evaluated in
-batches with the interpreter lock released.
+Rust ``CubicSpline`` (with scipy's end condition, or fitted to samples) and
+``GeodesicSpline``, evaluated in batches with the interpreter lock released.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ import functools
 import numpy as np
 
 from . import _spherekit
+from ._curve import Curve
 
 try:  # scipy is optional: without it, rotations are (n, 4) scalar-last quaternion arrays.
     from scipy.spatial.transform import Rotation as _Rotation
@@ -49,6 +51,28 @@ def _quats(rotations, who):
     if q.shape[-1] != 4:
         raise ValueError(f"Expected `rotations` as quaternions of shape (n, 4), got {q.shape}.")
     return q, array
+
+
+def _checked_times(times, n, closed):
+    """``times`` as a float array, with scipy's ``RotationSpline`` messages for a wrong shape,
+    count (closed: one more than the rotations, the return time) or order."""
+    times = np.asarray(times, dtype=float)
+    if times.ndim != 1:
+        raise ValueError("`times` must be 1-dimensional.")
+    if len(times) != (n + 1 if closed else n):
+        if closed:
+            raise ValueError(
+                "Expected one more timestamp than rotations for a closed spline "
+                "(the time it is back at the first rotation), "
+                f"got {n} rotations and {len(times)} timestamps."
+            )
+        raise ValueError(
+            "Expected number of rotations to be equal to number of timestamps given, "
+            f"got {n} rotations and {len(times)} timestamps."
+        )
+    if (np.diff(times) <= 0).any():
+        raise ValueError("Values in `times` must be in a strictly increasing order.")
+    return times
 
 
 def _renamed(name, value, old_name, old_value):
@@ -156,23 +180,7 @@ class RotationSpline:
         q, array = _quats(rotations, "RotationSpline")
         if len(q) == 1:
             raise ValueError("`rotations` must contain at least 2 rotations.")
-        times = np.asarray(times, dtype=float)
-        if times.ndim != 1:
-            raise ValueError("`times` must be 1-dimensional.")
-        expected = len(q) + 1 if closed else len(q)
-        if len(times) != expected:
-            if closed:
-                raise ValueError(
-                    "Expected one more timestamp than rotations for a closed spline "
-                    "(the time it is back at the first rotation), "
-                    f"got {len(q)} rotations and {len(times)} timestamps."
-                )
-            raise ValueError(
-                "Expected number of rotations to be equal to number of timestamps given, "
-                f"got {len(q)} rotations and {len(times)} timestamps."
-            )
-        if (np.diff(times) <= 0).any():
-            raise ValueError("Values in `times` must be in a strictly increasing order.")
+        times = _checked_times(times, len(q), closed)
         scalar_first = bool(scalar_first)
         native_end = ("natural" if closed else "scipy") if end is None else end
         self._native = _spherekit._CubicRotations(
@@ -205,6 +213,122 @@ class RotationSpline:
         ``ValueError``)."""
         out = self._native(times, order, scalar_first=self._scalar_first and _Rotation is None)
         return _rotations(out) if order == 0 else out
+
+    def __getstate__(self):
+        return self._args
+
+    def __setstate__(self, state):
+        times, rotations, kwargs = state
+        self.__init__(times, rotations, **kwargs)
+
+
+class SmoothRotationSpline:
+    """The smoothing spline of noisy rotations, called as ``RotationSpline`` is.
+
+    ``SmoothRotationSpline(times, rotations, smoothing="gcv", weights=None)`` fits the cubic
+    spline of ``RotationSpline``'s family (natural ends) to rotations measured at ``times``
+    (a scipy ``Rotation``, or an ``(n, 4)`` quaternion array, scalar last or with
+    ``scalar_first=True`` scalar first): the curve minimising
+    ``Σ wᵢ·θᵢ² + λ·∫|v″|²``, with ``θᵢ`` the rotation angle between the curve at ``tᵢ`` and
+    sample ``i`` (``q`` and ``-q`` are the same sample) and ``v`` the curve in the tangent
+    space of its keys. About a single axis this is scipy's
+    ``make_smoothing_spline(times, angle, weights, lam)`` of the rotation angle.
+
+    - ``smoothing``: λ ≥ 0 (a number), ``"gcv"`` (generalised cross-validation, the default)
+      or ``{"rms": σ}`` (the λ whose weighted RMS residual is σ radians);
+    - ``weights``: one positive number per sample (default 1);
+    - ``max_error`` (radians) or ``keys`` (a count): keys at fewer sample times, the fewest
+      within ``max_error`` of every sample or that many (λ then defaults to 0; not with
+      ``"gcv"``).
+
+    ``spline(times, order=0|1|2)`` returns a ``Rotation`` (an ``(m, 4)`` array without scipy),
+    the body-frame angular rate or the body-frame angular acceleration, as
+    ``RotationSpline``; outside the sample times the end segments' cubics continue. The
+    attributes ``times`` and ``rotations`` are the samples as given, ``fit_info`` the fit
+    (``lambda``, ``rms``, ``max``, ``keys``, ``key_times``, ``iterations``, ``edf``,
+    ``residuals``). Bad input raises ``ValueError`` naming the option (``fit.smoothing: …``,
+    ``fit.weights[3]: …``). A spline pickles and deep-copies.
+
+    >>> import numpy as np
+    >>> from scipy.spatial.transform import Rotation
+    >>> from spherekit import SmoothRotationSpline
+    >>> t = np.arange(40) * 0.1
+    >>> noise = 0.01 * np.sin(7.3 * np.arange(40))
+    >>> samples = Rotation.from_rotvec(np.outer(0.5 * t + noise, [0, 0, 1]))
+    >>> spline = SmoothRotationSpline(t, samples, smoothing=0.01)
+    >>> spline([1.0, 2.0]).as_rotvec().shape
+    (2, 3)
+    >>> bool(spline.fit_info["rms"] < 0.01)
+    True
+    """
+
+    def __init__(
+        self,
+        times,
+        rotations,
+        smoothing="gcv",
+        weights=None,
+        *,
+        max_error=None,
+        keys=None,
+        scalar_first=False,
+    ):
+        q, array = _quats(rotations, "RotationSpline")
+        if len(q) == 1:
+            raise ValueError("`rotations` must contain at least 2 rotations.")
+        times = _checked_times(times, len(q), False)
+        scalar_first = bool(scalar_first)
+        fit = {"smoothing": smoothing}
+        if weights is not None:
+            fit["weights"] = np.asarray(weights, dtype=float).tolist()
+        if max_error is not None:
+            fit["max_error"] = max_error
+        if keys is not None:
+            fit["keys"] = keys
+        self._curve = Curve(
+            "cubic",
+            q,
+            knots=times,
+            fit=fit,
+            extrapolate="segment",
+            scalar_first=scalar_first and array,
+        )
+        self._args = (
+            times.copy(),
+            _as_given(rotations, q, array),
+            dict(smoothing=smoothing, weights=weights, max_error=max_error, keys=keys, scalar_first=scalar_first),
+        )
+        self._array_keys = array
+        self._scalar_first = scalar_first
+        self.times = times
+
+    @functools.cached_property
+    def rotations(self):
+        """The samples as given: the ``Rotation`` (one made from the quaternion array; the array
+        without scipy)."""
+        return _key_rotations(self._args[1], self._array_keys, self._scalar_first)
+
+    @property
+    def fit_info(self):
+        """The fit: a dict of ``lambda``, ``rms``, ``max`` (radians), ``keys``, ``key_times``,
+        ``iterations``, ``edf`` and ``residuals`` (each sample's rotation angle from the
+        curve)."""
+        return self._curve.fit_info
+
+    def __call__(self, times, order=0):
+        """The rotations (``order=0``), body-frame angular rates (1, rad per time unit) or
+        angular accelerations (2) at ``times`` (a number or a 1-D array; NaN is a
+        ``ValueError``)."""
+        if order == 0:
+            out = self._curve(times)
+            if _Rotation is not None and self._scalar_first and self._array_keys:
+                out = np.roll(out, -1, axis=-1)  # [w, x, y, z] as given -> scipy's [x, y, z, w]
+            return _rotations(out)
+        if order == 1:
+            return self._curve.angular_velocity(times, frame="body")
+        if order == 2:
+            return self._curve.angular_acceleration(times, frame="body")
+        raise ValueError("`order` must be 0, 1 or 2.")
 
     def __getstate__(self):
         return self._args

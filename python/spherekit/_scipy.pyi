@@ -1,6 +1,6 @@
 # Type stubs of the scipy drop-ins. Rotations are scipy's `Rotation` (without scipy installed,
 # the drop-ins return (n, 4) quaternion arrays instead; the stubs describe the usual case).
-from typing import Literal, Optional, Union, overload
+from typing import Any, Literal, Optional, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -23,6 +23,30 @@ class RotationSpline:
         closed: bool = False,
         start_velocity: Optional[npt.ArrayLike] = None,
         end_velocity: Optional[npt.ArrayLike] = None,
+        scalar_first: bool = False,
+    ) -> None: ...
+    @overload
+    def __call__(self, times: _Times) -> Rotation: ...
+    @overload
+    def __call__(self, times: _Times, order: Literal[0]) -> Rotation: ...
+    @overload
+    def __call__(self, times: _Times, order: Literal[1, 2]) -> npt.NDArray[np.float64]: ...
+
+class SmoothRotationSpline:
+    times: npt.NDArray[np.float64]
+    @property
+    def rotations(self) -> Rotation: ...
+    @property
+    def fit_info(self) -> dict[str, Any]: ...
+    def __init__(
+        self,
+        times: npt.ArrayLike,
+        rotations: _Rotations,
+        smoothing: Union[float, Literal["gcv"], dict[str, float]] = "gcv",
+        weights: Optional[npt.ArrayLike] = None,
+        *,
+        max_error: Optional[float] = None,
+        keys: Optional[int] = None,
         scalar_first: bool = False,
     ) -> None: ...
     @overload

@@ -26,6 +26,7 @@ class Curve:
         canonicalize: Optional[bool] = None,
         parametrization: Optional[Literal["native", "arclength"]] = None,
         extrapolate: Optional[Literal["hold", "extend", "cycle", "error", "segment"]] = None,
+        fit: Optional[dict[str, Any]] = None,
         **params: Any,
     ) -> None: ...
     def __call__(self, t: _Times, order: Literal[0, 1, 2] = 0) -> npt.NDArray[np.float64]: ...
@@ -49,6 +50,8 @@ class Curve:
     def auxiliary(self) -> Optional[npt.NDArray[np.float64]]: ...
     @property
     def info(self) -> dict[str, Any]: ...
+    @property
+    def fit_info(self) -> Optional[dict[str, Any]]: ...
 
 class _CubicRotations:
     def __init__(

@@ -162,9 +162,9 @@ pub(crate) fn write_jets<P: Flat>(
 /// A curve of any registered method on any sphere, evaluated from numpy arrays.
 ///
 /// `Curve(method, points, *, space=None, knots=None, closed=False, scalar_first=False,
-/// canonicalize=None, parametrization=None, extrapolate=None, **params)` builds the curve a
-/// scene `{"space", "method", "points", "knots", "closed", "canonicalize", "parametrization",
-/// "extrapolate", "params"}` describes (see `spherekit.methods()` for the methods and their
+/// canonicalize=None, parametrization=None, extrapolate=None, fit=None, **params)` builds the
+/// curve a scene `{"space", "method", "points", "knots", "closed", "canonicalize",
+/// "parametrization", "extrapolate", "fit", "params"}` describes (see `spherekit.methods()` for the methods and their
 /// parameters), with the CLI's validation and error messages.
 ///
 /// - `points`: an `(n, d)` array. The sphere is inferred from `d` (3: S2, 4: S3 quaternions,
@@ -180,6 +180,10 @@ pub(crate) fn write_jets<P: Flat>(
 /// - `parametrization="arclength"`: the same curve at unit speed over `[0, L]` (the rotation
 ///   angle on S3); `extrapolate`: `"hold"` (default), `"extend"`, `"cycle"` (closed),
 ///   `"error"` or `"segment"` (the open cubic), what the curve is outside `domain`.
+/// - `fit`: with `"cubic"`, the points are samples at the times `knots` and the curve is the
+///   cubic spline fitted to them: a dict of the scene's `"fit"` (`smoothing`: λ, `"gcv"` or
+///   `{"rms": σ}`; `weights`; `max_error` or `keys`), numpy arrays accepted; `fit_info` then
+///   reports the fit.
 /// - `**params`: the method's parameters (`gamma=0.3`, `end="scipy"`, `timing="arc-length"`,
 ///   `smoothness=3` for the Cⁿ blends, `velocities=rates` with `frame="body"` for the cubic
 ///   through keys with rates…); arrays are taken as nested lists.
@@ -226,6 +230,7 @@ struct Args {
     canonicalize: Option<bool>,
     parametrization: Option<String>,
     extrapolate: Option<String>,
+    fit: Option<Value>,
     params: Option<Value>,
 }
 
@@ -317,7 +322,7 @@ impl PyCurve {
 #[pymethods]
 impl PyCurve {
     #[new]
-    #[pyo3(signature = (method, points, *, space=None, knots=None, closed=false, scalar_first=false, canonicalize=None, parametrization=None, extrapolate=None, **params))]
+    #[pyo3(signature = (method, points, *, space=None, knots=None, closed=false, scalar_first=false, canonicalize=None, parametrization=None, extrapolate=None, fit=None, **params))]
     #[expect(clippy::too_many_arguments, reason = "the Python signature")]
     fn new(
         py: Python<'_>,
@@ -330,6 +335,7 @@ impl PyCurve {
         canonicalize: Option<bool>,
         parametrization: Option<&str>,
         extrapolate: Option<&str>,
+        fit: Option<&Bound<'_, PyAny>>,
         params: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
         let rows = point_rows(points, "points")?;
@@ -350,6 +356,7 @@ impl PyCurve {
             Some(p) if !p.is_empty() => Some(to_json(p.as_any(), 0)?),
             _ => None,
         };
+        let fit = fit.map(|f| to_json(f, 0)).transpose()?;
         let args = Args {
             method: method.to_owned(),
             points: rows,
@@ -360,6 +367,7 @@ impl PyCurve {
             canonicalize,
             parametrization: parametrization.map(str::to_owned),
             extrapolate: extrapolate.map(str::to_owned),
+            fit,
             params,
         };
         let mut scene = Map::new();
@@ -385,6 +393,9 @@ impl PyCurve {
         }
         if let Some(p) = &args.params {
             scene.insert("params".into(), p.clone());
+        }
+        if let Some(f) = &args.fit {
+            scene.insert("fit".into(), f.clone());
         }
         let text = Value::Object(scene).to_string();
         let scene = Scene::from_json(&text).map_err(|e| value_error(e.to_string()))?;
@@ -422,6 +433,9 @@ impl PyCurve {
         kwargs.set_item("canonicalize", a.canonicalize)?;
         kwargs.set_item("parametrization", &a.parametrization)?;
         kwargs.set_item("extrapolate", &a.extrapolate)?;
+        if let Some(fit) = &a.fit {
+            kwargs.set_item("fit", from_json(py, fit)?)?;
+        }
         if let Some(params) = &a.params {
             kwargs.update(from_json(py, params)?.cast::<PyDict>()?.as_mapping())?;
         }
@@ -516,6 +530,28 @@ impl PyCurve {
     fn info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let info = with_built!(self, |b| info_of(b));
         from_json(py, &Value::Object(info))
+    }
+
+    /// The fit of a curve built with `fit`, `None` otherwise: a dict of `lambda`, `rms` and
+    /// `max` (radians; rotation angles on S3), `keys`, `key_times` (an array), `iterations`,
+    /// `edf` (the effective degrees of freedom, `None` with fewer keys than samples) and
+    /// `residuals` (each sample's distance to the curve, an array).
+    #[getter]
+    fn fit_info<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let residuals = with_built!(self, |b| b.fit.as_ref().map(|f| f.residuals.clone()));
+        let (Some(report), Some(residuals)) = (self.built.fit_report(), residuals) else {
+            return Ok(None);
+        };
+        let out = PyDict::new(py);
+        out.set_item("lambda", report.lambda)?;
+        out.set_item("rms", report.rms)?;
+        out.set_item("max", report.max)?;
+        out.set_item("keys", report.keys)?;
+        out.set_item("key_times", PyArray1::from_slice(py, &report.key_times))?;
+        out.set_item("iterations", report.iterations)?;
+        out.set_item("edf", report.edf)?;
+        out.set_item("residuals", PyArray1::from_vec(py, residuals))?;
+        Ok(Some(out))
     }
 
     /// The jumps at each interior joint, as `spherekit sample --continuity` reports them:

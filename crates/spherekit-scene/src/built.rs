@@ -9,6 +9,7 @@ use spherekit::{
     angular_velocity_acceleration, angular_velocity_acceleration_body,
 };
 
+use crate::fit::FitRecord;
 use crate::scene::{SampleOptions, Scene};
 use crate::space::Space;
 
@@ -29,6 +30,9 @@ pub struct Built<P: Manifold> {
     /// The order of continuity the construction guarantees at its joints (0 for C⁰; the
     /// blend order n for Pobegailo's Cⁿ splines).
     pub order: usize,
+    /// With the scene's `"fit"`: the sample times, fitted keys, residuals and the fit's report
+    /// (the samples are [`inputs`](Self::inputs)); `None` otherwise.
+    pub fit: Option<FitRecord<P>>,
 }
 
 impl<P: ScenePoint> Built<P> {
@@ -42,6 +46,7 @@ impl<P: ScenePoint> Built<P> {
             auxiliary: Vec::new(),
             info: Map::new(),
             order: 0,
+            fit: None,
         }
     }
 
@@ -356,6 +361,17 @@ impl BuiltCurve {
             Self::S2(b) => (b.continuity(), b.order),
             Self::S3(b) => (b.continuity(), b.order),
             Self::Sm(b) => (b.continuity(), b.order),
+        }
+    }
+
+    /// The fit's report when the curve was fitted to samples (the scene's `"fit"`); the
+    /// samples, their times and residuals are in the [`Built::fit`] record of each sphere.
+    #[must_use]
+    pub fn fit_report(&self) -> Option<&spherekit::FitReport> {
+        match self {
+            Self::S2(b) => b.fit.as_ref().map(|f| &f.report),
+            Self::S3(b) => b.fit.as_ref().map(|f| &f.report),
+            Self::Sm(b) => b.fit.as_ref().map(|f| &f.report),
         }
     }
 

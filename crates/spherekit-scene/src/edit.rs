@@ -312,8 +312,9 @@ impl Document {
     }
 
     /// Gives curve `curve` another method: parameters the new method does not have go, knots
-    /// go unless the new method takes as many for these points, and `"extrapolate":
-    /// "segment"` goes unless the new method's curve has end segments to continue.
+    /// go unless the new method takes as many for these points, `"fit"` goes unless the new
+    /// method fits samples, and `"extrapolate": "segment"` goes unless the new method's curve
+    /// has end segments to continue.
     ///
     /// # Errors
     ///
@@ -333,6 +334,9 @@ impl Document {
         c.insert("method".into(), json!(new.id));
         if !keep_knots {
             c.remove("knots");
+        }
+        if !crate::fit::applies_to(new) {
+            c.remove("fit");
         }
         if let Some(Value::Object(p)) = c.get_mut("params") {
             p.retain(|k, _| {
@@ -552,7 +556,7 @@ fn curve_doc_mut(
 }
 
 /// The curve fields a single-curve scene keeps at the top level.
-const CURVE_FIELDS: [&str; 10] = [
+const CURVE_FIELDS: [&str; 11] = [
     "method",
     "points",
     "knots",
@@ -563,6 +567,7 @@ const CURVE_FIELDS: [&str; 10] = [
     "extrapolate",
     "color",
     "label",
+    "fit",
 ];
 
 /// The description of curve `i` in a document (the curve's own fields, wherever they sit).
@@ -629,8 +634,9 @@ enum PointEdit {
 /// end), a copy of its neighbour for a parameter. A parameter list that would become empty
 /// becomes its last value (one number for every joint). A list of vectors, one per point (the
 /// key velocities), loses the removed point's vector or gains a zero vector (of its neighbour's
-/// length) for the inserted one: zero is a velocity at every point. Lists of another length, or
-/// of other values, are left for the scene's validation to report.
+/// length) for the inserted one: zero is a velocity at every point. A fit's `weights` (one per
+/// point) follow as a parameter list does. Lists of another length, or of other values, are
+/// left for the scene's validation to report.
 fn follow_points(
     curve: &mut Map<String, Value>,
     method: &Method,
@@ -663,6 +669,11 @@ fn follow_points(
                 *value = Value::from(removed);
             }
         }
+    }
+    if let Some(Value::Object(fit)) = curve.get_mut("fit")
+        && let Some(Value::Array(weights)) = fit.get_mut("weights")
+    {
+        follow(weights, false, count, count, edit);
     }
 }
 

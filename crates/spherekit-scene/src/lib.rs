@@ -22,11 +22,13 @@
 //!   "color": "#rrggbb",                 optional
 //!   "samples": 256,                     optional: uniform parameters over the domain, ends included
 //!   "eval_at": [t, ...],                optional: explicit parameters instead of "samples"
+//!   "fit": { ... },                     optional, method cubic only: the points are samples at the
+//!                                       times knots, the curve the spline fitted to them (FitRecord)
 //!   "view": { ... } }                   optional, used by rendering (see View)
 //! ```
 //!
 //! Several curves on one sphere: `"curves": [{ "method", "points", "knots", "params",
-//! "canonicalize", "closed", "parametrization", "extrapolate", "color", "label" }, …]` in place
+//! "canonicalize", "closed", "parametrization", "extrapolate", "color", "label", "fit" }, …]` in place
 //! of the single-curve fields. Unknown fields are
 //! rejected, so a misspelt option is an error rather than silently ignored. Errors name the
 //! field (`points[3]: …`, `curves[1].params.order: …`); the library's own errors say what is
@@ -58,6 +60,7 @@
 mod built;
 mod edit;
 mod error;
+mod fit;
 mod json;
 mod methods;
 mod params;
@@ -73,6 +76,7 @@ pub use built::{
 };
 pub use edit::{Document, EditError};
 pub use error::{SceneError, one_line};
+pub use fit::{FIT_FIELDS, FitRecord, MAX_FIT_SAMPLES};
 pub use params::{Param, ParamKind, PerJoint};
 pub use registry::{KnotRule, METHODS, MIN_CLOSED_POINTS, Method, Spaces, registry_json};
 pub use scene::{

@@ -192,11 +192,12 @@ impl Method {
     }
 
     /// The descriptor as JSON: `{ "id", "name", "type", "summary", "continuity", "source", "spaces",
-    /// "knots", "min_points", "interpolates", "single_piece", "closes", "params": [...] }`
+    /// "knots", "min_points", "interpolates", "single_piece", "closes", "params": [...], "fit" }`
     /// (a closed curve has at least [`MIN_CLOSED_POINTS`] points and
     /// [`KnotRule::count_for`] knots), where `knots` is
     /// `{ "skip": k }` for methods that take one knot per point but `k` at each end, or
-    /// `"computed"` / `"none"`.
+    /// `"computed"` / `"none"`, and `fit` is `null`, or for a method that fits samples (the
+    /// scene's `"fit"`) the fit object's keys, `[{ "name", "summary" }, …]`.
     #[must_use]
     pub fn to_json(&self) -> Value {
         json!({
@@ -217,6 +218,12 @@ impl Method {
             "single_piece": self.single_piece,
             "closes": self.closes,
             "params": self.params.iter().map(Param::to_json).collect::<Vec<_>>(),
+            "fit": crate::fit::applies_to(self).then(|| {
+                crate::fit::FIT_FIELDS
+                    .iter()
+                    .map(|(name, summary)| json!({ "name": name, "summary": summary }))
+                    .collect::<Vec<_>>()
+            }),
         })
     }
 }

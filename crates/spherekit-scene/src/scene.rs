@@ -5,10 +5,13 @@
 
 use serde::Deserialize;
 use serde_json::{Map, Value, json};
-use spherekit::{DomainError, Extrapolate, S2Point, SmPoint, SplineError, UnitQuat, unflip};
+use spherekit::{
+    DomainError, Extrapolate, FitOptions, S2Point, SmPoint, SplineError, UnitQuat, unflip,
+};
 
 use crate::built::{BuiltCurve, ScenePoint};
 use crate::error::{SceneError, field_error, in_curve};
+use crate::fit;
 use crate::json::json_error;
 use crate::params::{Params, current_names};
 use crate::registry::{KnotRule, Method};
@@ -50,6 +53,8 @@ struct RawScene {
     #[serde(default)]
     label: Option<String>,
     #[serde(default)]
+    fit: Option<Value>,
+    #[serde(default)]
     curves: Option<Vec<RawCurve>>,
     #[serde(default)]
     samples: Option<f64>,
@@ -83,6 +88,8 @@ struct RawCurve {
     color: Option<String>,
     #[serde(default)]
     label: Option<String>,
+    #[serde(default)]
+    fit: Option<Value>,
 }
 
 /// Where to evaluate a curve.
@@ -118,6 +125,9 @@ pub struct CurveSpec {
     pub color: Option<[u8; 3]>,
     /// The curve's name in the figure's legend, when the scene gives one (default: the method).
     pub label: Option<String>,
+    /// `"fit"`: the points are samples at the times `knots`, and the curve is the cubic spline
+    /// fitted to them (method `cubic` only; see [`FitRecord`](crate::FitRecord)).
+    pub fit: Option<FitOptions>,
 }
 
 /// A validated scene: its fields are checked, the curves are built by [`Scene::build`].
@@ -268,6 +278,11 @@ impl CurveSpec {
                 }
             }
         }
+        let fit = raw
+            .fit
+            .as_ref()
+            .map(|f| fit::parse(f, method, raw.points.len()))
+            .transpose()?;
         let parametrization = Parametrization::parse(raw.parametrization.as_deref())?;
         let extrapolate = parse_extrapolate(raw.extrapolate.as_deref(), closed)?;
         Ok(Self {
@@ -281,6 +296,7 @@ impl CurveSpec {
             extrapolate,
             color: parse_color("color", raw.color)?,
             label: parse_label(raw.label)?,
+            fit,
         })
     }
 
@@ -292,6 +308,10 @@ impl CurveSpec {
     /// As [`Scene::build`], without the `curves[i]` prefix and without the check of the
     /// sample parameters.
     pub fn build(&self, space: Space) -> Result<BuiltCurve, SceneError> {
+        if let Some(options) = &self.fit {
+            let built = fit::build(self, options, space)?;
+            return built.retime(self.parametrization, self.extrapolate);
+        }
         let points = match space {
             Space::S2 => Points::S2(points(&self.points)?),
             Space::S3 => {
@@ -353,7 +373,7 @@ pub(crate) struct Input<'a> {
     pub(crate) params: Params<'a>,
 }
 
-fn points<P: ScenePoint>(raw: &[Vec<f64>]) -> Result<Vec<P>, SceneError> {
+pub(crate) fn points<P: ScenePoint>(raw: &[Vec<f64>]) -> Result<Vec<P>, SceneError> {
     raw.iter()
         .enumerate()
         .map(|(index, c)| {
@@ -419,10 +439,11 @@ impl Scene {
                     || raw.extrapolate.is_some()
                     || raw.color.is_some()
                     || raw.label.is_some()
+                    || raw.fit.is_some()
                 {
                     return Err(field_error(
                         "curves",
-                        "with \"curves\", give knots, params, canonicalize, closed, parametrization, extrapolate, color and label inside each curve",
+                        "with \"curves\", give knots, params, canonicalize, closed, parametrization, extrapolate, color, label and fit inside each curve",
                     ));
                 }
                 if curves.is_empty() {
@@ -452,6 +473,7 @@ impl Scene {
                     extrapolate: raw.extrapolate,
                     color: raw.color,
                     label: raw.label,
+                    fit: raw.fit,
                 };
                 vec![CurveSpec::validate(space, raw_curve)?]
             }

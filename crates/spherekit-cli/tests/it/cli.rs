@@ -725,3 +725,48 @@ fn sample_of_keys_with_rates_passes_through_every_key_with_its_rate() {
         "error: params.velocities: must have one velocity per point: expected 4, got 3"
     );
 }
+
+/// Noisy samples of a circle of latitude at 0.1 s, fitted with λ given and by key count.
+#[test]
+fn sample_prints_the_fit_report() {
+    let points: Vec<Value> = (0..20)
+        .map(|i| {
+            let t = 0.1 * f64::from(i);
+            serde_json::json!([t.cos(), t.sin(), 0.4 + 0.01 * (f64::from(i) * 2.9).sin()])
+        })
+        .collect();
+    let knots: Vec<f64> = (0..20).map(|i| 0.1 * f64::from(i)).collect();
+    let scene = serde_json::json!({ "space": "S2", "method": "cubic", "points": points,
+                                    "knots": knots, "fit": { "smoothing": 0.001 } });
+    let out = sample(&scene.to_string(), &[]);
+    let fit = &out["info"]["fit"];
+    assert_eq!(fit["lambda"], 0.001);
+    assert_eq!(fit["keys"], 20);
+    assert_eq!(fit["key_times"], serde_json::json!(knots));
+    assert_eq!(fit["residuals"].as_array().unwrap().len(), 20);
+    let (rms, max) = (fit["rms"].as_f64().unwrap(), fit["max"].as_f64().unwrap());
+    assert!(0.0 < rms && rms <= max && max < 0.02, "{fit}");
+    assert!(fit["iterations"].as_u64().unwrap() >= 1);
+    assert!(fit["edf"].as_f64().unwrap() > 2.0, "{fit}");
+    // Fewer keys: no effective degrees of freedom.
+    let mut scene = scene;
+    scene["fit"] = serde_json::json!({ "keys": 5 });
+    let fit = &sample(&scene.to_string(), &[])["info"]["fit"];
+    assert_eq!(fit["keys"], 5);
+    assert_eq!(fit["lambda"], 0.0);
+    assert!(fit.get("edf").is_none(), "{fit}");
+    assert_eq!(
+        reject(&scene.to_string().replace("\"keys\":5", "\"keys\":50"), &[]),
+        "error: fit.keys: must be between 2 and the number of samples, 20; got 50"
+    );
+    // The registry describes the fit object of the cubic.
+    let methods = spherekit(&["methods", "--json"], "");
+    let registry: Value = serde_json::from_slice(&methods.stdout).unwrap();
+    let cubic = registry
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["id"] == "cubic")
+        .unwrap();
+    assert_eq!(cubic["fit"][0]["name"], "smoothing");
+}

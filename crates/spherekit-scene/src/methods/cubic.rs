@@ -242,7 +242,11 @@ fn key_velocities<P, V>(
 }
 
 /// The built curve with its knots and solve facts, C^`order` at its joints.
-fn finish<P: ScenePoint>(curve: CubicSpline<P>, points: Vec<P>, order: usize) -> Built<P> {
+pub(crate) fn finish<P: ScenePoint>(
+    curve: CubicSpline<P>,
+    points: Vec<P>,
+    order: usize,
+) -> Built<P> {
     let info = curve.solve_info();
     let knots = curve.knots().to_vec();
     Built::new(curve, points)

@@ -13,6 +13,7 @@ mod batch;
 mod closed;
 mod corner_params;
 mod edit;
+mod fit;
 mod hermite;
 mod names;
 mod registry;
