@@ -51,7 +51,7 @@ pub const FIT_FIELDS: [(&str, &str); 4] = [
 /// The most samples a fit takes. Every solve is O(N), but "gcv" and `{"rms": σ}` solve for
 /// dozens of λ and key reduction (`max_error`) refits once per key it tries: a scene of more
 /// samples is refused with an error on `points` rather than left to run for minutes.
-pub const MAX_FIT_SAMPLES: usize = 10_000;
+pub const MAX_FIT_SAMPLES: usize = 100_000;
 
 /// Whether `method` takes a `fit` field.
 pub(crate) fn applies_to(method: &Method) -> bool {
