@@ -88,8 +88,6 @@ LOOP_PERIOD = 4.0
 
 # The spherekit smoothing spline (see `fit_spherekit`): the `fit=` argument of `Curve("cubic")`
 # and its `fit_info` dict (lambda, rms, max, keys, key_times, iterations, edf).
-FIT_AVAILABLE = hasattr(spherekit.Curve, "fit_info")
-NOT_AVAILABLE = "spherekit fit: not available in this build"
 
 
 # ---- quaternions, scalar last [x, y, z, w] as scipy ----------------------------------------
@@ -403,15 +401,9 @@ def fit_euclidean_gcv(t, samples, space):
     return normalised_track([make_smoothing_spline(t, samples[:, j]) for j in range(3)])
 
 
-class FitUnavailable(Exception):
-    pass
-
-
 def fit_spherekit(knots, samples, fit, closed=False):
     """spherekit's smoothing spline, `Curve("cubic", samples, knots=knots, fit=fit)` (closed: one
     knot more than samples, the time of the return to the first)."""
-    if not FIT_AVAILABLE:
-        raise FitUnavailable(NOT_AVAILABLE)
     return spherekit.Curve("cubic", samples, knots=knots, closed=closed, fit=fit)
 
 
@@ -453,15 +445,10 @@ def recovery():
         noise = [math.degrees(math.sqrt(np.mean(angle[space](d, truth[0]) ** 2))) for d in data]
         print(f"| {space} | the noisy samples themselves | {np.mean(noise):.3g} ({np.std(noise):.2g}) | | |")
         for label, fit in METHODS[space]:
-            try:
-                runs = np.array([errors(fit(t, d, space), t, truth, space) for d in data])
-            except FitUnavailable as e:
-                print(f"| {space} | {label} | {e} | | |")
-                continue
+            runs = np.array([errors(fit(t, d, space), t, truth, space) for d in data])
             cells = " | ".join(f"{m:.3g} ({s:.2g})" for m, s in zip(runs.mean(axis=0), runs.std(axis=0)))
             print(f"| {space} | {label} | {cells} |")
-        if FIT_AVAILABLE:
-            infos.append(f"{space}: {fit_spherekit(t, data[0], {'smoothing': 'gcv'}).fit_info}")
+        infos.append(f"{space}: {fit_spherekit(t, data[0], {'smoothing': 'gcv'}).fit_info}")
     print()
     for info in infos:
         print(f"spherekit fit_info, first seed, {info}")
@@ -477,10 +464,9 @@ from bench_python import best as best_of  # noqa: E402 (the scripts' one timing 
 
 def time_spherekit_fit(t, quats, repeat):
     """Wall clock of spherekit's fit of the samples: (GCV, λ given), λ the one its GCV chose."""
-    if not FIT_AVAILABLE:
-        raise FitUnavailable(NOT_AVAILABLE)
-    lam = fit_spherekit(t, quats, {"smoothing": "gcv"}).fit_info["lambda"]
-    gcv = best_of(lambda: fit_spherekit(t, quats, {"smoothing": "gcv"}), repeat)
+    fits = []
+    gcv = best_of(lambda: fits.append(fit_spherekit(t, quats, {"smoothing": "gcv"})), repeat)
+    lam = fits[-1].fit_info["lambda"]
     given = best_of(lambda: fit_spherekit(t, quats, {"smoothing": lam}), repeat)
     return gcv, given, lam
 
@@ -497,11 +483,8 @@ def speed(repeat_large):
         q = noisy_s3(truth_s3(t, turn=False)[0], np.random.default_rng(n))
         _, v = rotvecs_about_mean(t, q)
         scipy_s = best_of(lambda: [make_smoothing_spline(t, v[:, j]) for j in range(3)], repeat)
-        try:
-            gcv, given, lam = time_spherekit_fit(t, q, repeat)
-            ours = f"{gcv:.3f} s | {given:.3f} s (λ = {lam:.3g})"
-        except FitUnavailable as e:
-            ours = f"{e} | {e}"
+        gcv, given, lam = time_spherekit_fit(t, q, repeat)
+        ours = f"{gcv:.3f} s | {given:.3f} s (λ = {lam:.3g})"
         print(f"| {n:,} | {repeat} | {scipy_s:.2f} s | {ours} |")
     print()
 
@@ -564,11 +547,8 @@ def key_reduction():
             scan = range(lo, min(len(t), 2 * k) + 1)
             first = next(j for j in scan if err(j) <= eps)
             above = sum(1 for j in scan if j > k and err(j) > eps)
-            if FIT_AVAILABLE:
-                knots = np.append(t, len(t) * (t[1] - t[0])) if closed else t
-                ours = str(fit_spherekit(knots, samples, {"max_error": eps}, closed=closed).fit_info["keys"])
-            else:
-                ours = NOT_AVAILABLE
+            knots = np.append(t, len(t) * (t[1] - t[0])) if closed else t
+            ours = str(fit_spherekit(knots, samples, {"max_error": eps}, closed=closed).fit_info["keys"])
             print(f"| {label} | {eps_deg:g}° | {k} | {math.degrees(err(k)):.3f} | {first} | {above} | {ours} |")
     print()
 
