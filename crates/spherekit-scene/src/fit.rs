@@ -276,7 +276,7 @@ fn check_params(params: &Map<String, Value>) -> Result<(), SceneError> {
     Ok(())
 }
 
-fn fitted<P: FitPoint>(
+fn fitted<P: ScenePoint>(
     samples: Vec<P>,
     times: Vec<f64>,
     options: &FitOptions,
@@ -285,11 +285,7 @@ fn fitted<P: FitPoint>(
     let (curve, report) =
         CubicSpline::try_fit(samples.clone(), times.clone(), options, closed).map_err(fit_error)?;
     let keys = curve.points().to_vec();
-    let residuals: Vec<f64> = samples
-        .iter()
-        .zip(&times)
-        .map(|(y, &t)| P::residual(y, &spherekit::Curve::eval(&curve, t)))
-        .collect();
+    let residuals = report.residuals.clone();
     let info = fit_json(&report, &residuals);
     let mut built = cubic::finish(curve, samples, 2).with_info("fit", info);
     built.fit = Some(FitRecord {
@@ -313,21 +309,3 @@ fn fit_error(e: SplineError) -> SceneError {
     }
 }
 
-/// A sphere's distance between a sample and the fitted curve, as the fit measures it.
-pub(crate) trait FitPoint: ScenePoint {
-    /// The residual of `sample` at `curve`, radians.
-    fn residual(sample: &Self, curve: &Self) -> f64 {
-        spherekit::Manifold::dist(sample, curve)
-    }
-}
-
-impl FitPoint for spherekit::S2Point {}
-
-impl FitPoint for spherekit::SmPoint {}
-
-impl FitPoint for UnitQuat {
-    /// The rotation angle between the two orientations (the same for `±sample`).
-    fn residual(sample: &Self, curve: &Self) -> f64 {
-        (sample.conjugate() * *curve).rotation_angle()
-    }
-}

@@ -104,6 +104,8 @@ pub struct FitReport {
     pub iterations: usize,
     /// The effective degrees of freedom `m·tr A(λ)` (S^m; keys at every sample only).
     pub edf: Option<f64>,
+    /// Each sample's distance to the fitted curve, radians (rotation angle on S³).
+    pub residuals: Vec<f64>,
 }
 
 /// # Fitting samples
@@ -377,6 +379,7 @@ impl<Q: Manifold> Samples<Q> {
                 key_times: self.key_times(idx),
                 iterations,
                 edf,
+                residuals: dist.clone(),
             },
             dist,
         })
