@@ -677,7 +677,6 @@ def bad_cases():
         ("fit_without_knots", '{"space":"S2","method":"cubic","points":[[1,0,0],[0,1,0]],"fit":{}}', 'knots: are needed with "fit"'),
         ("fit_knot_count", '{' + FIT.replace(',0.4]', ']') + ',"fit":{}}', "knots: expected 5 knots, got 4"),
         ("fit_clamped_end", '{' + FIT + ',"params":{"end":"clamped"},"fit":{}}', 'params.end: does not apply with "fit"'),
-        ("fit_closed_s3_odd_turn", '{"space":"S3","method":"cubic","closed":true,"points":[[1,0,0,0],[0.5,0,0,0.866],[-0.5,0,0,0.866]],"knots":[0,1,2,3],"fit":{}}', "closed: the samples make a loop of an odd number of turns"),
         ("fit_in_curves_list", '{"space":"S2","curves":[{' + FIT[13:] + ',"fit":{"keys":0}}]}', "curves[0].fit.keys: must be between 2"),
     ]
 

@@ -15,9 +15,10 @@
 //!
 //! Only `"method": "cubic"` fits, with its default (natural) ends: the fit's `params` may give
 //! `"end": "natural"` and nothing else. On S³ the samples are rotations (`q` and `−q` the same
-//! sample) and every distance is a rotation angle; a closed S³ fit whose samples, taken the
-//! shorter way round, end on the far side of the first (a loop of an odd number of turns,
-//! [`spherekit::closes_at_antipode`]) is refused.
+//! sample) and every distance is a rotation angle; a closed S³ fit is a loop in SO(3)
+//! ([`CubicSpline::try_fit_loop`]): samples that, taken the shorter way round, end on the far
+//! side of the first (a loop of an odd number of turns, [`spherekit::closes_at_antipode`]) are
+//! fitted by a curve that ends at `−q₀`, the same rotation.
 //!
 //! The built curve keeps a [`FitRecord`]: the sample times, the fitted keys, each sample's
 //! residual and the core's [`FitReport`]; `info.fit` reports the same numbers as JSON
@@ -242,16 +243,11 @@ pub(crate) fn build(
         Space::S2 => Points::S2(points(&spec.points)?),
         Space::S3 => {
             let mut samples: Vec<UnitQuat> = points(&spec.points)?;
-            let mut shortest = samples.clone();
-            spherekit::unflip(&mut shortest);
-            if spec.closed && spherekit::closes_at_antipode(&shortest) {
-                return Err(field_error(
-                    "closed",
-                    "the samples make a loop of an odd number of turns (the last, taken the shorter way, is nearer −q₀ than q₀): fitting a loop of an odd number of turns is not supported yet",
-                ));
-            }
             if spec.canonicalize {
-                samples = shortest;
+                spherekit::unflip(&mut samples);
+            }
+            if spec.closed {
+                return fitted_loop(samples, times, options).map(BuiltCurve::S3);
             }
             Points::S3(samples)
         }
@@ -297,6 +293,33 @@ fn fitted<P: ScenePoint>(
     Ok(built)
 }
 
+/// The closed fit of rotations, a loop in SO(3) ([`CubicSpline::try_fit_loop`]: a loop of an
+/// odd number of turns ends at `−q₀`).
+fn fitted_loop(
+    samples: Vec<UnitQuat>,
+    times: Vec<f64>,
+    options: &FitOptions,
+) -> Result<Built<UnitQuat>, SceneError> {
+    let (curve, report) =
+        CubicSpline::try_fit_loop(samples.clone(), times.clone(), options).map_err(fit_error)?;
+    let keys: Vec<UnitQuat> = report.key_times[..report.keys]
+        .iter()
+        .map(|&t| spherekit::Curve::eval(&curve, t))
+        .collect();
+    let info = fit_json(&report, &report.residuals);
+    let mut built = Built::new(curve, samples)
+        .with_info("knots", json!(report.key_times))
+        .with_info("fit", info)
+        .with_order(2);
+    built.fit = Some(FitRecord {
+        times,
+        keys,
+        residuals: report.residuals.clone(),
+        report,
+    });
+    Ok(built)
+}
+
 /// The core's parameter errors on the scene's fields (`fit.smoothing`, `fit.keys`, …); the
 /// solver's as a failed fit.
 fn fit_error(e: SplineError) -> SceneError {
@@ -308,4 +331,3 @@ fn fit_error(e: SplineError) -> SceneError {
         e => SceneError::Spline(e),
     }
 }
-

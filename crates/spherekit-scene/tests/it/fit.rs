@@ -158,26 +158,30 @@ fn sign_flips_of_rotation_samples_change_nothing() {
 }
 
 #[test]
-fn closed_fits_need_the_return_time_and_refuse_the_odd_turn_loop() {
-    // One full turn in 12 samples: taken the shorter way, the samples close at −q₀.
+fn closed_fits_need_the_return_time_and_fit_the_odd_turn_loop_in_so3() {
+    // One full turn in 12 samples: taken the shorter way, the samples close at −q₀; the fit is
+    // a loop in SO(3), ending at −q₀, whatever the signs as given.
     let q = rotations(12, 2.0 * std::f64::consts::PI);
     let times: Vec<f64> = (0..=12).map(f64::from).collect();
-    let e = build(
-        &json!({ "space": "S3", "method": "cubic", "points": q, "knots": times,
-                           "closed": true, "fit": {} }),
-    )
-    .unwrap_err();
-    assert!(
-        e.starts_with("closed: ") && e.contains("not supported yet"),
-        "{e}"
-    );
-    // The same with the signs as given.
-    let e = build(
-        &json!({ "space": "S3", "method": "cubic", "points": q, "knots": times,
-                           "closed": true, "canonicalize": false, "fit": {} }),
-    )
-    .unwrap_err();
-    assert!(e.starts_with("closed: "), "{e}");
+    for canonicalize in [true, false] {
+        let curves = build(
+            &json!({ "space": "S3", "method": "cubic", "points": q, "knots": times,
+                                    "closed": true, "canonicalize": canonicalize,
+                                    "fit": { "smoothing": 0.01 } }),
+        )
+        .unwrap();
+        let BuiltCurve::S3(b) = &curves[0] else {
+            panic!("a curve of rotations")
+        };
+        assert!(b.curve.is_antiperiodic());
+        let fit = b.fit.as_ref().unwrap();
+        assert_eq!((fit.keys.len(), fit.report.key_times.len()), (12, 13));
+        assert!(fit.report.max < 0.05, "{:?}", fit.report);
+        for (k, key) in fit.keys.iter().enumerate() {
+            let c = b.curve.eval(fit.report.key_times[k]);
+            assert!(c.dist(key).min(c.dist(&-*key)) < 1e-12);
+        }
+    }
     // A loop needs the return time.
     let (points, _) = circle_samples(12);
     let e = build(&json!({ "space": "S2", "method": "cubic", "points": points,

@@ -46,6 +46,8 @@ use crate::cubic::{CubicEnd, CubicSpline};
 use crate::error::{PointError, SplineError};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
+use crate::rotation_loop::RotationLoop;
+use crate::s3::UnitQuat;
 use solve::{Samples, Solved, Start, Until};
 
 /// How much a fit smooths.
@@ -159,44 +161,118 @@ impl<P: Manifold> CubicSpline<P> {
         options: &FitOptions,
         closed: bool,
     ) -> Result<(Self, FitReport), SplineError> {
-        let vectors: Vec<P::Vector> = samples.iter().map(Manifold::to_vector).collect();
-        #[cfg(feature = "compact")]
-        let (keys, report) = {
-            use crate::sm::SmPoint;
-            let vectors = vectors
-                .iter()
-                .map(|v| crate::ambient::VecN::new(v.to_vec()))
-                .collect();
-            let (keys, report) = fit::<SmPoint>(vectors, times, options, closed, P::SPEED_SCALE)?;
-            let like = samples[0].to_vector();
-            let keys: Vec<P::Vector> = keys
-                .iter()
-                .map(|k| like.with_coords(k.as_slice()))
-                .collect();
-            (keys, report)
-        };
-        #[cfg(not(feature = "compact"))]
-        let (keys, report) = fit::<P>(vectors, times, options, closed, P::SPEED_SCALE)?;
-        let points = keys.into_iter().map(P::from_vector_unchecked).collect();
-        let curve = Self::try_new(
-            points,
-            Some(report.key_times.clone()),
-            CubicEnd::Natural,
-            closed,
-        )?;
+        let (points, knots, report) = fit_points(samples, times, options, closed, None)?;
+        let curve = Self::try_new(points, Some(knots), CubicEnd::Natural, closed)?;
         Ok((curve, report))
     }
 }
 
-/// The fit on `Q`'s vectors: the fitted keys and the report.
+/// # Fitting a closed loop of rotations
+impl CubicSpline<UnitQuat> {
+    /// The closed fit of rotation samples as a loop in SO(3): [`try_fit`](Self::try_fit) with
+    /// `closed`, except that samples making a loop of an odd number of turns (taken the shorter
+    /// way from each to the next, the last is nearer `−q₀` than `q₀`: a 360° orbit) are fitted
+    /// by a curve that ends at `−q₀`, the same rotation, as [`RotationLoop`] builds every
+    /// closed construction. The fit of such samples is the first half of the closed fit of the
+    /// samples followed by their antipodes one period later (weights repeated), which is
+    /// antiperiodic (the fit is unique, and the doubled problem is symmetric); λ by GCV uses
+    /// the hat matrix of the samples as given, and the report is the first half's.
+    ///
+    /// # Errors
+    ///
+    /// As [`try_fit`](Self::try_fit) with `closed`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use spherekit::glam::DVec3;
+    /// use spherekit::{CubicSpline, Curve, FitOptions, Manifold, Smoothing, UnitQuat};
+    ///
+    /// // A camera orbiting once about the vertical, measured 24 times with a wobble.
+    /// let times: Vec<f64> = (0..=24).map(|i| f64::from(i) * 0.25).collect();
+    /// let samples: Vec<UnitQuat> = times[..24]
+    ///     .iter()
+    ///     .enumerate()
+    ///     .map(|(i, &t)| {
+    ///         let yaw = UnitQuat::from_axis_angle(DVec3::Z, t * std::f64::consts::TAU / 6.0).unwrap();
+    ///         let wobble = 0.01 * (f64::from(i as u32) * 1.7).sin();
+    ///         UnitQuat::from_axis_angle(DVec3::X, wobble).unwrap() * yaw
+    ///     })
+    ///     .collect();
+    /// let options = FitOptions { smoothing: Some(Smoothing::Lambda(1e-3)), ..FitOptions::default() };
+    /// let (orbit, report) = CubicSpline::try_fit_loop(samples.clone(), times, &options).unwrap();
+    /// assert!(orbit.is_antiperiodic() && report.keys == 24);
+    /// assert!(orbit.eval(1.0).dist(&samples[4]).min(orbit.eval(1.0).dist(&-samples[4])) < 0.01);
+    /// ```
+    pub fn try_fit_loop(
+        samples: Vec<UnitQuat>,
+        times: Vec<f64>,
+        options: &FitOptions,
+    ) -> Result<(RotationLoop<Self>, FitReport), SplineError> {
+        let n = samples.len();
+        let mut shortest = samples;
+        crate::unflip(&mut shortest);
+        let mut report = None;
+        let curve = RotationLoop::try_new(shortest, Some(times), |keys, knots| {
+            let half = (keys.len() == 2 * n).then_some(n);
+            let (points, knots, r) =
+                fit_points(keys, knots.unwrap_or_default(), options, true, half)?;
+            report = Some(r);
+            Self::try_new(points, Some(knots), CubicEnd::Natural, true)
+        })?;
+        let report = report.ok_or(SplineError::TooFewPoints { min: 3, got: n })?;
+        Ok((curve, report))
+    }
+}
+
+/// The fit of `samples` (with the `compact` feature on S^m): the fitted keys, their times
+/// (closed: and the return time) and the report. `half`: the samples are a doubled
+/// antiperiodic loop of `half` samples given.
+fn fit_points<P: Manifold>(
+    samples: Vec<P>,
+    times: Vec<f64>,
+    options: &FitOptions,
+    closed: bool,
+    half: Option<usize>,
+) -> Result<(Vec<P>, Vec<f64>, FitReport), SplineError> {
+    let vectors: Vec<P::Vector> = samples.iter().map(Manifold::to_vector).collect();
+    #[cfg(feature = "compact")]
+    let (keys, knots, report) = {
+        use crate::sm::SmPoint;
+        let vectors = vectors
+            .iter()
+            .map(|v| crate::ambient::VecN::new(v.to_vec()))
+            .collect();
+        let (keys, knots, report) =
+            fit::<SmPoint>(vectors, times, options, closed, P::SPEED_SCALE, half)?;
+        let like = samples[0].to_vector();
+        let keys: Vec<P::Vector> = keys
+            .iter()
+            .map(|k| like.with_coords(k.as_slice()))
+            .collect();
+        (keys, knots, report)
+    };
+    #[cfg(not(feature = "compact"))]
+    let (keys, knots, report) = fit::<P>(vectors, times, options, closed, P::SPEED_SCALE, half)?;
+    let points = keys.into_iter().map(P::from_vector_unchecked).collect();
+    Ok((points, knots, report))
+}
+
+/// Fitted keys, their times (closed: and the return time) and the report.
+type KeysAndReport<V> = (Vec<V>, Vec<f64>, FitReport);
+
+/// The fit on `Q`'s vectors: the fitted keys, their times and the report.
 fn fit<Q: Manifold>(
     mut vectors: Vec<Q::Vector>,
     times: Vec<f64>,
     options: &FitOptions,
     closed: bool,
     scale: f64,
-) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
+    half: Option<usize>,
+) -> Result<KeysAndReport<Q::Vector>, SplineError> {
     let n = vectors.len();
+    // The samples as given (the first half of a doubled loop).
+    let given = half.unwrap_or(n);
     let min = if closed { 3 } else { 2 };
     if n < min {
         return Err(SplineError::TooFewPoints { min, got: n });
@@ -221,11 +297,11 @@ fn fit<Q: Manifold>(
     }
     let weights = match &options.weights {
         None => vec![1.0; n],
-        Some(w) if w.len() != n => {
+        Some(w) if w.len() != given => {
             return Err(invalid(
                 "weights",
                 format!(
-                    "must have one weight per sample: {n} samples, got {}",
+                    "must have one weight per sample: {given} samples, got {}",
                     w.len()
                 ),
             ));
@@ -237,7 +313,7 @@ fn fit<Q: Manifold>(
                     format!("weights[{i}] must be positive and finite, got {}", w[i]),
                 ));
             }
-            w.clone()
+            w.iter().cycle().take(n).copied().collect()
         }
     };
     let smoothing = match (&options.smoothing, &options.keys) {
@@ -268,10 +344,10 @@ fn fit<Q: Manifold>(
         _ => {}
     }
     match options.keys {
-        FitKeys::Count(m) if m < min || m > n => {
+        FitKeys::Count(m) if m < min || m > given => {
             return Err(invalid(
                 "keys",
-                format!("must be between {min} and the number of samples, {n}; got {m}"),
+                format!("must be between {min} and the number of samples, {given}; got {m}"),
             ));
         }
         FitKeys::MaxError(e) if !(e.is_finite() && e > 0.0) => {
@@ -299,18 +375,29 @@ fn fit<Q: Manifold>(
         closed,
         scale,
         sign_free,
+        half,
     };
-    match options.keys {
+    let fitted = match options.keys {
         FitKeys::Samples => {
             let idx: Vec<usize> = (0..n).collect();
-            problem.fit_on(&idx, &smoothing)
+            problem.fitted(&idx, &smoothing, None)?
         }
         FitKeys::Count(m) => {
-            let idx = reduce::even_keys(&problem, m);
-            problem.fit_on(&idx, &smoothing)
+            let idx = reduce::even_keys(&problem, m * n / given);
+            problem.fitted(&idx, &smoothing, None)?
         }
-        FitKeys::MaxError(eps) => reduce::reduce(&problem, eps, &smoothing),
+        FitKeys::MaxError(eps) => reduce::reduce(&problem, eps, &smoothing)?,
+    };
+    let knots = fitted.knots;
+    let mut report = fitted.report;
+    if half.is_some() {
+        // The first half's: its keys, their times and the return time, its residuals.
+        report.keys /= 2;
+        report.key_times.truncate(report.keys);
+        report.key_times.push(problem.times[given]);
+        report.residuals.truncate(given);
     }
+    Ok((fitted.keys, knots, report))
 }
 
 fn invalid(name: &'static str, reason: String) -> SplineError {
@@ -321,22 +408,31 @@ fn invalid(name: &'static str, reason: String) -> SplineError {
 pub(crate) struct Fitted<V> {
     pub(crate) keys: Vec<V>,
     pub(crate) report: FitReport,
+    /// The key times (closed: and the return time).
+    pub(crate) knots: Vec<f64>,
     /// Each sample's distance to the curve.
     pub(crate) dist: Vec<f64>,
 }
 
 impl<Q: Manifold> Samples<Q> {
-    /// The fit on the keys `idx` with the given smoothing, and its report.
-    pub(crate) fn fit_on(
-        &self,
-        idx: &[usize],
-        smoothing: &Smoothing,
-    ) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
-        let f = self.fitted(idx, smoothing, None)?;
-        Ok((f.keys, f.report))
+    /// The number of samples as given (the first half of a doubled loop).
+    pub(crate) fn given(&self) -> usize {
+        self.half.unwrap_or(self.points.len())
     }
 
-    /// [`fit_on`](Self::fit_on) with the per-sample distances, from starting keys `start`
+    /// The trace of the hat matrix of the Euclidean smoothing spline of the samples as given.
+    fn trace(&self, lambda: f64) -> f64 {
+        let n = self.given();
+        reinsch::hat_trace(
+            &self.times[..n + usize::from(self.closed)],
+            &self.weights[..n],
+            lambda,
+            self.closed,
+        )
+    }
+
+    /// The fit on the keys `idx` with the given smoothing, its report and the per-sample
+    /// distances, from starting keys `start`
     /// (default: the samples at the keys).
     pub(crate) fn fitted(
         &self,
@@ -360,9 +456,7 @@ impl<Q: Manifold> Samples<Q> {
         let (rss, _) = self.evaluate(idx, &solved.curve, &mut dist);
         let total: f64 = self.weights.iter().sum();
         let dim = start_dim(&solved.curve);
-        let edf = all.then(|| {
-            (dim - 1) as f64 * reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed)
-        });
+        let edf = all.then(|| (dim - 1) as f64 * self.trace(lambda));
         let keys: Vec<Q::Vector> = solved
             .curve
             .points()
@@ -381,6 +475,7 @@ impl<Q: Manifold> Samples<Q> {
                 edf,
                 residuals: dist.clone(),
             },
+            knots: self.key_times(idx),
             dist,
         })
     }
@@ -409,13 +504,15 @@ impl<Q: Manifold> Samples<Q> {
         start: Vec<Q::Vector>,
         iterations: &mut usize,
     ) -> Result<(f64, Solved<Q>), SplineError> {
-        let n = self.points.len() as f64;
+        let n = self.given() as f64;
+        // A doubled loop's residual is twice the samples'.
+        let share = n / self.points.len() as f64;
         let (lo, hi) = self.lambda_range();
         let mut warm = Start::Keys(start);
         let mut score = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
             let lambda = u.exp();
-            let rss = self.trial(lambda, idx, warm, iterations)?;
-            let tr = reinsch::hat_trace(&self.times, &self.weights, lambda, self.closed);
+            let rss = share * self.trial(lambda, idx, warm, iterations)?;
+            let tr = self.trace(lambda);
             let denom = (n - tr).max(f64::MIN_POSITIVE);
             Ok(n * rss / (denom * denom))
         };
@@ -545,8 +642,8 @@ impl<Q: Manifold> Samples<Q> {
     /// to nearly the limit geodesic (`tr A ≤ 2.01`, closed `1.01`), from the hat matrix's
     /// trace alone.
     fn lambda_range(&self) -> (f64, f64) {
-        let n = self.points.len() as f64;
-        let tr = |u: f64| reinsch::hat_trace(&self.times, &self.weights, u.exp(), self.closed);
+        let n = self.given() as f64;
+        let tr = |u: f64| self.trace(u.exp());
         // The natural scale: λ ~ w·h³ for a sample spacing h.
         let span = self.times[self.times.len() - 1] - self.times[0];
         let h = span / n;

@@ -18,7 +18,7 @@
 //! The fit at each step is the least-squares cubic on the keys (λ = 0 unless given).
 
 use super::solve::Samples;
-use super::{FitReport, Fitted, Smoothing};
+use super::{Fitted, Smoothing};
 use crate::ambient::Ambient;
 use crate::curve::Curve;
 use crate::error::SplineError;
@@ -43,6 +43,17 @@ pub(super) fn even_keys<Q: Manifold>(problem: &Samples<Q>, m: usize) -> Vec<usiz
     idx
 }
 
+/// The keys with, for a doubled loop, each key's mirror half a loop away, sorted and distinct.
+fn symmetric<Q: Manifold>(problem: &Samples<Q>, mut idx: Vec<usize>) -> Vec<usize> {
+    if let Some(half) = problem.half {
+        let mirrors: Vec<usize> = idx.iter().map(|&i| (i + half) % (2 * half)).collect();
+        idx.extend(mirrors);
+    }
+    idx.sort_unstable();
+    idx.dedup();
+    idx
+}
+
 /// The starting keys: the ends (closed: three evenly spread samples) and a sample wherever the
 /// track has turned by half a radian since the last key.
 fn start_keys<Q: Manifold>(problem: &Samples<Q>) -> Vec<usize> {
@@ -58,9 +69,7 @@ fn start_keys<Q: Manifold>(problem: &Samples<Q>) -> Vec<usize> {
             last = i;
         }
     }
-    idx.sort_unstable();
-    idx.dedup();
-    idx
+    symmetric(problem, idx)
 }
 
 /// The largest error of the fit on `idx` in each segment (samples and midpoints), and where.
@@ -130,7 +139,7 @@ pub(super) fn reduce<Q: Manifold>(
     problem: &Samples<Q>,
     eps: f64,
     smoothing: &Smoothing,
-) -> Result<(Vec<Q::Vector>, FitReport), SplineError> {
+) -> Result<Fitted<Q::Vector>, SplineError> {
     let n = problem.points.len();
     let mut idx = start_keys(problem);
     let mut iterations = 0;
@@ -160,8 +169,7 @@ pub(super) fn reduce<Q: Manifold>(
             break;
         }
         idx.extend(added);
-        idx.sort_unstable();
-        idx.dedup();
+        idx = symmetric(problem, idx);
         let start = idx.iter().map(|&i| problem.points[i].clone()).collect();
         fitted = problem.fitted(&idx, smoothing, Some(start))?;
         iterations += fitted.report.iterations;
@@ -181,12 +189,21 @@ pub(super) fn reduce<Q: Manifold>(
         .map(|k| (worst[k - 1].0.max(worst[k].0), idx[k]))
         .collect();
     order.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let min = if problem.closed { 3 } else { 2 };
+    let min = (if problem.closed { 3 } else { 2 }) * if problem.half.is_some() { 2 } else { 1 };
     for (_, key) in order.into_iter().take(REMOVAL_TRIALS) {
         if idx.len() <= min {
             break;
         }
-        let trial: Vec<usize> = idx.iter().copied().filter(|&i| i != key).collect();
+        // A doubled loop drops a key and its mirror together.
+        let mirror = problem.half.map_or(key, |h| (key + h) % (2 * h));
+        if mirror == idx[0] {
+            continue;
+        }
+        let trial: Vec<usize> = idx
+            .iter()
+            .copied()
+            .filter(|&i| i != key && i != mirror)
+            .collect();
         let start = trial.iter().map(|&i| problem.points[i].clone()).collect();
         let Ok(f) = problem.fitted(&trial, smoothing, Some(start)) else {
             continue;
@@ -199,8 +216,7 @@ pub(super) fn reduce<Q: Manifold>(
         }
     }
     let worst = segment_errors(problem, &idx, &fitted)?;
-    let mut report = fitted.report;
-    report.max = worst.iter().fold(report.max, |m, &(d, _)| m.max(d));
-    report.iterations = iterations;
-    Ok((fitted.keys, report))
+    fitted.report.max = worst.iter().fold(fitted.report.max, |m, &(d, _)| m.max(d));
+    fitted.report.iterations = iterations;
+    Ok(fitted)
 }

@@ -62,6 +62,9 @@ pub(crate) struct Samples<P: Manifold> {
     pub(crate) scale: f64,
     /// Samples are rotations: `±y` is the same sample (S³).
     pub(crate) sign_free: bool,
+    /// The samples are a doubled antiperiodic loop (the samples given, then their antipodes one
+    /// period later) of this many samples given.
+    pub(crate) half: Option<usize>,
 }
 
 /// Where a solve starts: keys, or a fit on the same keys for another λ (whose curve, residual

@@ -654,3 +654,126 @@ fn a_repeated_sample_weighs_twice() {
         "{errors:?}"
     );
 }
+
+/// The periodic Euclidean smoothing spline's values (period `t[n] − t[0]`), dense.
+fn periodic_reinsch_values(t: &[f64], y: &[f64], w: &[f64], lambda: f64) -> Vec<f64> {
+    let n = y.len();
+    let h: Vec<f64> = t.windows(2).map(|p| p[1] - p[0]).collect();
+    let mut q = vec![0.0; n * n];
+    let mut r = vec![0.0; n * n];
+    for j in 0..n {
+        let (p, next) = ((j + n - 1) % n, (j + 1) % n);
+        q[p * n + j] += 1.0 / h[p];
+        q[j * n + j] += -1.0 / h[p] - 1.0 / h[j];
+        q[next * n + j] += 1.0 / h[j];
+        r[j * n + j] += (h[p] + h[j]) / 3.0;
+        r[j * n + next] += h[j] / 6.0;
+        r[next * n + j] += h[j] / 6.0;
+    }
+    let mut k = vec![0.0; n * n];
+    for col in 0..n {
+        let rhs: Vec<f64> = (0..n).map(|a| q[col * n + a]).collect();
+        let z = dense_solve(r.clone(), rhs, n);
+        for row in 0..n {
+            k[row * n + col] = (0..n).map(|a| q[row * n + a] * z[a]).sum();
+        }
+    }
+    let mut sys = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            sys[i * n + j] = lambda * k[i * n + j] + if i == j { w[i] } else { 0.0 };
+        }
+    }
+    let rhs = (0..n).map(|i| w[i] * y[i]).collect();
+    dense_solve(sys, rhs, n)
+}
+
+#[test]
+fn a_full_turn_orbit_is_fitted_as_a_loop_in_so3() {
+    // One turn about an axis in T, the rotation angle 2πt/T plus a periodic wobble and noise:
+    // the fit is 2πt/T plus the periodic smoothing spline of the rest (the linear part has no
+    // second derivative).
+    let n = 30;
+    let period = 6.0;
+    let mut t = vec![0.0];
+    for i in 1..=n {
+        t.push(t[i - 1] + 0.15 + 0.1 * noise(i, 31).abs());
+    }
+    let scale = period / t[n];
+    for s in &mut t {
+        *s *= scale;
+    }
+    let tau = std::f64::consts::TAU;
+    let rest: Vec<f64> = (0..n)
+        .map(|i| 0.3 * (tau * t[i] / period).sin() + 0.05 * noise(i, 32))
+        .collect();
+    let w: Vec<f64> = (0..n).map(|i| 0.5 + noise(i, 33).abs()).collect();
+    let axis = DVec3::new(0.2, 0.3, 1.0).normalize();
+    let samples: Vec<UnitQuat> = (0..n)
+        .map(|i| {
+            let q =
+                UnitQuat::from_axis_angle(axis, tau * t[i] / period + rest[i]).expect("a rotation");
+            if i % 4 == 3 { -q } else { q }
+        })
+        .collect();
+    for lam in [0.01, 0.3] {
+        let options = FitOptions {
+            smoothing: Some(Smoothing::Lambda(lam)),
+            weights: Some(w.clone()),
+            keys: FitKeys::Samples,
+        };
+        let (orbit, report) =
+            CubicSpline::try_fit_loop(samples.clone(), t.clone(), &options).expect("a fit");
+        assert!(orbit.is_antiperiodic());
+        assert_eq!(
+            (report.keys, report.key_times.len(), report.residuals.len()),
+            (n, n + 1, n)
+        );
+        let expect = periodic_reinsch_values(&t, &rest, &w, lam);
+        for i in 0..n {
+            let want = UnitQuat::from_axis_angle(axis, tau * t[i] / period + expect[i])
+                .expect("a rotation");
+            let got = orbit.eval(t[i]);
+            let d = got.dist(&want).min(got.dist(&-want));
+            assert!(d < 1e-8, "λ {lam} sample {i}: {d:e}");
+        }
+        // Closed in SO(3): C² across the seam up to the sign.
+        let (a, b) = (
+            orbit.jet_at(t[0], spherekit::Side::Right),
+            orbit.jet_at(t[n], spherekit::Side::Left),
+        );
+        assert!(
+            (a.velocity + b.velocity).length() < 1e-9
+                && (a.acceleration + b.acceleration).length() < 1e-8
+        );
+    }
+    // GCV, an rms target and key reduction work on the loop too.
+    for options in [
+        FitOptions {
+            smoothing: Some(Smoothing::Gcv),
+            ..FitOptions::default()
+        },
+        FitOptions {
+            smoothing: Some(Smoothing::Rms(0.04)),
+            ..FitOptions::default()
+        },
+        FitOptions {
+            smoothing: Some(Smoothing::Lambda(0.0)),
+            keys: FitKeys::MaxError(0.12),
+            ..FitOptions::default()
+        },
+    ] {
+        let (orbit, report) =
+            CubicSpline::try_fit_loop(samples.clone(), t.clone(), &options).expect("a fit");
+        assert!(
+            orbit.is_antiperiodic() && report.rms < 0.1,
+            "{options:?}: {report:?}"
+        );
+        if let FitKeys::MaxError(eps) = options.keys {
+            assert!(report.max <= eps && report.keys < n, "{report:?}");
+        }
+        if let Some(Smoothing::Rms(sigma)) = options.smoothing {
+            assert!((report.rms / sigma - 1.0).abs() < 1e-6);
+        }
+    }
+}
