@@ -448,7 +448,8 @@ def recovery():
             runs = np.array([errors(fit(t, d, space), t, truth, space) for d in data])
             cells = " | ".join(f"{m:.3g} ({s:.2g})" for m, s in zip(runs.mean(axis=0), runs.std(axis=0)))
             print(f"| {space} | {label} | {cells} |")
-        infos.append(f"{space}: {fit_spherekit(t, data[0], {'smoothing': 'gcv'}).fit_info}")
+        info = fit_spherekit(t, data[0], {"smoothing": "gcv"}).fit_info
+        infos.append(f"{space}: " + ", ".join(f"{k} {info[k]:.4g}" for k in ("lambda", "rms", "max", "keys", "iterations", "edf")))
     print()
     for info in infos:
         print(f"spherekit fit_info, first seed, {info}")
