@@ -6,14 +6,16 @@
 //!
 //! Greedy refinement, then a removal pass:
 //! 1. start from the end samples (closed: three samples evenly spread) and a key wherever the
-//!    track has turned by half a radian since the last key (so that every segment's least-squares
-//!    problem starts near its solution);
+//!    track has turned by a radian since the last key, halving every segment while the
+//!    least-squares fit does not converge from the samples at the keys;
 //! 2. fit on the keys; in every segment whose largest error (at its samples and midpoints)
 //!    exceeds `ε`, make the sample nearest the worst point a key; repeat until no segment
 //!    exceeds `ε` (each round at least halves the violating segments' spans, so the rounds are
 //!    O(log N), each an O(N) fit);
 //! 3. for the keys whose neighbouring segments have the smallest errors (at most 48 of them,
-//!    each trial a fit), drop a key if the fit without it is still within `ε`.
+//!    each trial a fit), drop a key if the fit without it is still within `ε`;
+//! 4. the same removal from the fewest evenly spread keys whose fit is within `ε` (bisection on
+//!    their count, between a third of the keys found and that many), when that ends with fewer.
 //!
 //! The fit at each step is the least-squares cubic on the keys (λ = 0 unless given).
 
@@ -27,6 +29,9 @@ use crate::manifold::{Manifold, slerp_vector};
 /// The removal pass tries at most this many keys (each trial is a fit of all samples): the
 /// pass stays O(N) fits' worth of work.
 const REMOVAL_TRIALS: usize = 48;
+
+/// The starting keys are at most this far apart (radians of turn).
+const START_TURN: f64 = 1.0;
 
 /// `m` keys among the samples, spread as evenly as the sample indices allow.
 pub(super) fn even_keys<Q: Manifold>(problem: &Samples<Q>, m: usize) -> Vec<usize> {
@@ -55,7 +60,7 @@ fn symmetric<Q: Manifold>(problem: &Samples<Q>, mut idx: Vec<usize>) -> Vec<usiz
 }
 
 /// The starting keys: the ends (closed: three evenly spread samples) and a sample wherever the
-/// track has turned by half a radian since the last key.
+/// track has turned by a radian since the last key.
 fn start_keys<Q: Manifold>(problem: &Samples<Q>) -> Vec<usize> {
     let n = problem.points.len();
     let mut idx = even_keys(problem, if problem.closed { 3 } else { 2 });
@@ -64,7 +69,7 @@ fn start_keys<Q: Manifold>(problem: &Samples<Q>) -> Vec<usize> {
         let (a, b) = (&problem.points[last], &problem.points[i]);
         let turn = Q::from_vector_unchecked(a.clone()).dist(&Q::from_vector_unchecked(b.clone()))
             * problem.scale;
-        if turn > 0.5 {
+        if turn > START_TURN {
             idx.push(i);
             last = i;
         }
@@ -143,7 +148,23 @@ pub(super) fn reduce<Q: Manifold>(
     let n = problem.points.len();
     let mut idx = start_keys(problem);
     let mut iterations = 0;
-    let mut fitted = problem.fitted(&idx, smoothing, None)?;
+    // A least-squares fit on keys far apart may not converge from the samples at the keys:
+    // then every segment is halved until it does.
+    let mut fitted = loop {
+        match problem.fitted(&idx, smoothing, None) {
+            Ok(f) => break f,
+            Err(e) if idx.len() == n => return Err(e),
+            Err(_) => {
+                let mids: Vec<usize> = idx
+                    .windows(2)
+                    .map(|w| (w[0] + w[1]) / 2)
+                    .chain(idx.last().map(|&l| (l + n) / 2).filter(|_| problem.closed))
+                    .collect();
+                idx.extend(mids);
+                idx = symmetric(problem, idx);
+            }
+        }
+    };
     iterations += fitted.report.iterations;
     loop {
         let worst = segment_errors(problem, &idx, &fitted)?;
@@ -177,6 +198,60 @@ pub(super) fn reduce<Q: Manifold>(
             break;
         }
     }
+    let (mut idx, mut fitted) =
+        removal_pass(problem, eps, smoothing, idx, fitted, &mut iterations)?;
+    // Least squares on evenly spread keys sometimes needs fewer: the fewest such keys within ε,
+    // by bisection on their count below the refinement's, then their removal pass; the fewer
+    // keys win.
+    let per = n / problem.given();
+    let mut hi = idx.len() / per;
+    // (Below a third of the refinement's keys a fit converges slowly, and never suffices.)
+    let mut lo = (if problem.closed { 3 } else { 2 }).max(hi / 3);
+    let mut even_best = None;
+    while lo < hi {
+        let mid = (lo + hi) / 2;
+        let even = even_keys(problem, mid * per);
+        let within = match problem.fitted(&even, smoothing, None) {
+            Ok(f) => {
+                iterations += f.report.iterations;
+                let within = segment_errors(problem, &even, &f)?
+                    .iter()
+                    .all(|&(d, _)| d <= eps);
+                if within {
+                    even_best = Some((even, f));
+                }
+                within
+            }
+            Err(_) => false,
+        };
+        if within {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    if let Some((even, f)) = even_best {
+        let (even, f) = removal_pass(problem, eps, smoothing, even, f, &mut iterations)?;
+        if even.len() < idx.len() {
+            (idx, fitted) = (even, f);
+        }
+    }
+    let worst = segment_errors(problem, &idx, &fitted)?;
+    fitted.report.max = worst.iter().fold(fitted.report.max, |m, &(d, _)| m.max(d));
+    fitted.report.iterations = iterations;
+    Ok(fitted)
+}
+
+/// The removal pass: for the keys whose neighbouring segments have the most room (at most
+/// [`REMOVAL_TRIALS`]), drop a key when the fit without it stays within `eps`.
+fn removal_pass<Q: Manifold>(
+    problem: &Samples<Q>,
+    eps: f64,
+    smoothing: &Smoothing,
+    mut idx: Vec<usize>,
+    mut fitted: Fitted<Q::Vector>,
+    iterations: &mut usize,
+) -> Result<(Vec<usize>, Fitted<Q::Vector>), SplineError> {
     // The removal pass, from the keys whose neighbouring segments have the most room.
     let worst = segment_errors(problem, &idx, &fitted)?;
     let first_removable = 1;
@@ -208,15 +283,12 @@ pub(super) fn reduce<Q: Manifold>(
         let Ok(f) = problem.fitted(&trial, smoothing, Some(start)) else {
             continue;
         };
-        iterations += f.report.iterations;
+        *iterations += f.report.iterations;
         let w = segment_errors(problem, &trial, &f)?;
         if w.iter().all(|&(d, _)| d <= eps) {
             idx = trial;
             fitted = f;
         }
     }
-    let worst = segment_errors(problem, &idx, &fitted)?;
-    fitted.report.max = worst.iter().fold(fitted.report.max, |m, &(d, _)| m.max(d));
-    fitted.report.iterations = iterations;
-    Ok(fitted)
+    Ok((idx, fitted))
 }
