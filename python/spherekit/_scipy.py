@@ -114,7 +114,31 @@ def _rotations(q):
         return _Rotation.from_quat(q)
 
 
-class RotationSpline:
+class _Keyed:
+    """What the drop-ins share: they pickle as their arguments (``_args``: the times, the
+    rotations as given and the keywords), and the splines give back their keys or samples."""
+
+    def _keep(self, times, rotations, q, array, scalar_first, kwargs):
+        self._args = (times.copy(), _as_given(rotations, q, array), kwargs)
+        self._array_keys = array
+        self._scalar_first = scalar_first
+        self.times = times
+
+    @functools.cached_property
+    def rotations(self):
+        """The keys (samples) as given: the ``Rotation`` (one made from the quaternion array;
+        the array without scipy)."""
+        return _key_rotations(self._args[1], self._array_keys, self._scalar_first)
+
+    def __getstate__(self):
+        return self._args
+
+    def __setstate__(self, state):
+        times, rotations, kwargs = state
+        self.__init__(times, rotations, **kwargs)
+
+
+class RotationSpline(_Keyed):
     """Interpolates rotations with continuous angular rate and acceleration.
 
     A drop-in for ``scipy.spatial.transform.RotationSpline``: the same constructor (a scipy
@@ -192,20 +216,9 @@ class RotationSpline:
             end_velocity=end_velocity,
             scalar_first=scalar_first and array,
         )
-        self._args = (
-            times.copy(),
-            _as_given(rotations, q, array),
-            dict(end=end, closed=closed, start_velocity=start_velocity, end_velocity=end_velocity, scalar_first=scalar_first),
-        )
-        self._array_keys = array
-        self._scalar_first = scalar_first
-        self.times = times
-
-    @functools.cached_property
-    def rotations(self):
-        """The keys as given: the ``Rotation`` (one made from the quaternion array; the array
-        without scipy)."""
-        return _key_rotations(self._args[1], self._array_keys, self._scalar_first)
+        self._keep(times, rotations, q, array, scalar_first, dict(
+            end=end, closed=closed, start_velocity=start_velocity, end_velocity=end_velocity,
+            scalar_first=scalar_first))
 
     def __call__(self, times, order=0):
         """The interpolated rotations (``order=0``), body-frame angular rates (1, rad per time
@@ -214,15 +227,9 @@ class RotationSpline:
         out = self._native(times, order, scalar_first=self._scalar_first and _Rotation is None)
         return _rotations(out) if order == 0 else out
 
-    def __getstate__(self):
-        return self._args
-
-    def __setstate__(self, state):
-        times, rotations, kwargs = state
-        self.__init__(times, rotations, **kwargs)
 
 
-class SmoothRotationSpline:
+class SmoothRotationSpline(_Keyed):
     """The smoothing spline of noisy rotations, called as ``RotationSpline`` is.
 
     ``SmoothRotationSpline(times, rotations, smoothing="gcv", weights=None)`` fits the cubic
@@ -293,20 +300,9 @@ class SmoothRotationSpline:
             extrapolate="segment",
             scalar_first=scalar_first and array,
         )
-        self._args = (
-            times.copy(),
-            _as_given(rotations, q, array),
-            dict(smoothing=smoothing, weights=weights, max_error=max_error, keys=keys, scalar_first=scalar_first),
-        )
-        self._array_keys = array
-        self._scalar_first = scalar_first
-        self.times = times
-
-    @functools.cached_property
-    def rotations(self):
-        """The samples as given: the ``Rotation`` (one made from the quaternion array; the array
-        without scipy)."""
-        return _key_rotations(self._args[1], self._array_keys, self._scalar_first)
+        self._keep(times, rotations, q, array, scalar_first, dict(
+            smoothing=smoothing, weights=weights, max_error=max_error, keys=keys,
+            scalar_first=scalar_first))
 
     @property
     def fit_info(self):
@@ -330,15 +326,9 @@ class SmoothRotationSpline:
             return self._curve.angular_acceleration(times, frame="body")
         raise ValueError("`order` must be 0, 1 or 2.")
 
-    def __getstate__(self):
-        return self._args
-
-    def __setstate__(self, state):
-        times, rotations, kwargs = state
-        self.__init__(times, rotations, **kwargs)
 
 
-class Slerp:
+class Slerp(_Keyed):
     """Spherical linear interpolation of rotations.
 
     A drop-in for ``scipy.spatial.transform.Slerp``: the same constructor (a scipy
@@ -384,10 +374,7 @@ class Slerp:
             raise ValueError("Times must be in strictly increasing order.")
         scalar_first = bool(scalar_first)
         self._native = _spherekit._SlerpRotations(times, q, scalar_first=scalar_first and array)
-        self._args = (times.copy(), _as_given(rotations, q, array), dict(scalar_first=scalar_first))
-        self._array_keys = array
-        self._scalar_first = scalar_first
-        self.times = times
+        self._keep(times, rotations, q, array, scalar_first, dict(scalar_first=scalar_first))
         self.timedelta = timedelta
 
     @functools.cached_property
@@ -413,9 +400,3 @@ class Slerp:
         times)."""
         return _rotations(self._native(times, scalar_first=self._scalar_first and _Rotation is None))
 
-    def __getstate__(self):
-        return self._args
-
-    def __setstate__(self, state):
-        times, rotations, kwargs = state
-        self.__init__(times, rotations, **kwargs)
