@@ -978,7 +978,11 @@ fn draw_points<P: Manifold>(
     for p in &aux {
         canvas.marker(*p, Shape::Diamond, color, 7.0);
     }
-    let key = if b.fit.is_some() { fitted_key(key) } else { key };
+    let key = if b.fit.is_some() {
+        fitted_key(key)
+    } else {
+        key
+    };
     for p in &keys {
         canvas.marker(*p, key.0, key.1, key.2);
     }

@@ -52,7 +52,10 @@ fn residuals_are_not_plotted_on_an_arc_length_axis() {
     let (_, axes) = render_figure(&s, &curves, 300).expect("renders");
     assert_eq!(axes.len(), 1, "speed only");
     let svg = render_svg(&s, 300).expect("SVG");
-    assert!(svg.contains("sample (fitted to)"), "the samples are still drawn");
+    assert!(
+        svg.contains("sample (fitted to)"),
+        "the samples are still drawn"
+    );
 }
 
 #[test]
