@@ -610,9 +610,11 @@ fn speed_label(s3: bool, normalized: bool) -> String {
     }
 }
 
+/// The residual plot's title: the angle (on S³ the rotation angle) from each sample to the
+/// curve.
 fn residual_label(s3: bool) -> String {
-    let distance = if s3 { "rotation angle" } else { "angle" };
-    format!("fit residual: {distance} from each sample to the curve (degrees; dashed: rms)")
+    let kind = if s3 { "rotation residual" } else { "residual angle" };
+    format!("{kind} per sample (degrees, dashed: rms)")
 }
 
 fn component_label(s3: bool, body: bool, normalized: bool) -> String {

@@ -32,7 +32,7 @@ fn a_fit_has_a_residual_plot_and_names_its_marks() {
     assert_eq!(axes.len(), 2, "speed and residuals");
     assert_eq!(axes[1].time, [0.0, 7.0], "the samples' times");
     let svg = render_svg(&fitted, 300).expect("SVG");
-    for text in ["fit residual: angle", "sample (fitted to)", "key (fitted)"] {
+    for text in ["residual angle per sample", "sample (fitted to)", "key (fitted)"] {
         assert!(svg.contains(text), "{text} missing: {svg}");
     }
 
