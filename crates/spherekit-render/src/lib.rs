@@ -613,7 +613,11 @@ fn speed_label(s3: bool, normalized: bool) -> String {
 /// The residual plot's title: the angle (on S³ the rotation angle) from each sample to the
 /// curve.
 fn residual_label(s3: bool) -> String {
-    let kind = if s3 { "rotation residual" } else { "residual angle" };
+    let kind = if s3 {
+        "rotation residual"
+    } else {
+        "residual angle"
+    };
     format!("{kind} per sample (degrees, dashed: rms)")
 }
 
@@ -691,7 +695,9 @@ fn legend_entries(
     let kinds = canvas.kinds();
     let mark = POINT_COLOR;
     if kinds.dot {
-        let key = if kinds.sample { "key (fitted)" } else { "key" };
+        // With a curve through the samples beside a fitted one, keys are of both kinds.
+        let fitted = layers.curves.iter().all(|c| c.fit_report().is_some());
+        let key = if fitted { "key (fitted)" } else { "key" };
         out.push(entry(Swatch::Marker(Shape::Dot, mark), key, 3));
     }
     if kinds.sample {

@@ -7,15 +7,20 @@
 use spherekit_render::{render_figure, render_svg};
 use spherekit_scene::Scene;
 
-/// Eight samples of a quarter circle on the equator, a little off it, at times 0..7.
-fn scene(extra: &str) -> Scene {
-    let points: Vec<String> = (0..8)
+/// Eight samples along the equator (0.2 rad apart), a little off it, for times 0..7.
+fn samples() -> Vec<String> {
+    (0..8)
         .map(|i| {
             let a = f64::from(i) * 0.2;
             let z = if i % 2 == 0 { 0.02 } else { -0.02 };
             format!("[{}, {}, {z}]", a.cos(), a.sin())
         })
-        .collect();
+        .collect()
+}
+
+/// A single curve on the [`samples`] at times 0..7, with `extra` fields.
+fn scene(extra: &str) -> Scene {
+    let points = samples();
     let text = format!(
         r#"{{"space":"S2","method":"cubic","points":[{}],"knots":[0,1,2,3,4,5,6,7],
         "view":{{"plot":"speed","legend":true}}{extra}}}"#,
@@ -32,7 +37,11 @@ fn a_fit_has_a_residual_plot_and_names_its_marks() {
     assert_eq!(axes.len(), 2, "speed and residuals");
     assert_eq!(axes[1].time, [0.0, 7.0], "the samples' times");
     let svg = render_svg(&fitted, 300).expect("SVG");
-    for text in ["residual angle per sample", "sample (fitted to)", "key (fitted)"] {
+    for text in [
+        "residual angle per sample",
+        "sample (fitted to)",
+        "key (fitted)",
+    ] {
         assert!(svg.contains(text), "{text} missing: {svg}");
     }
 
@@ -42,6 +51,28 @@ fn a_fit_has_a_residual_plot_and_names_its_marks() {
     assert_eq!(axes.len(), 1, "speed only");
     let svg = render_svg(&interpolating, 300).expect("SVG");
     assert!(!svg.contains("sample") && svg.contains(">key<"), "{svg}");
+}
+
+#[test]
+fn beside_a_curve_through_the_samples_keys_are_not_all_fitted() {
+    let curve = |fit: &str| {
+        format!(
+            r#"{{"method":"cubic","points":[{}],"knots":[0,1,2,3,4,5,6,7]{fit}}}"#,
+            samples().join(",")
+        )
+    };
+    let text = format!(
+        r#"{{"space":"S2","curves":[{},{}],"view":{{"plot":"speed","legend":true}}}}"#,
+        curve(r#","fit":{"smoothing":0.5}"#),
+        curve("")
+    );
+    let s = Scene::from_json(&text).expect("valid scene");
+    let svg = render_svg(&s, 300).expect("SVG");
+    assert!(
+        svg.contains(">key<") && svg.contains("sample (fitted to)"),
+        "{svg}"
+    );
+    assert!(!svg.contains("key (fitted)"), "{svg}");
 }
 
 #[test]
