@@ -28,7 +28,7 @@ def curves_of(scene):
 
 def curve_args(scene):
     kwargs = dict(scene.get("params", {}))
-    for key in ("knots", "closed", "canonicalize", "parametrization", "extrapolate"):
+    for key in ("knots", "closed", "canonicalize", "parametrization", "extrapolate", "fit"):
         if key in scene:
             kwargs[key] = scene[key]
     return scene["method"], np.array(scene["points"], dtype=float), dict(space=scene["space"], scalar_first=True, **kwargs)

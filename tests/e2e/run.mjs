@@ -1117,6 +1117,186 @@ test('"New" starts again from the fewest points of the method, undoably', async 
   await page.close();
 });
 
+/** The fit readout of curve `c` and the report Rust gives for it (`info.fit`). */
+async function fitState(page, c = 0) {
+  return page.evaluate((c) => {
+    const pg = window.spherekitPage.handle();
+    const [t0] = Array.from(pg.time_axis());
+    const json = JSON.parse(pg.sample_at(new Float64Array([t0]), false, null));
+    return {
+      readout: document.querySelector(`[data-fit-readout="${c}"]`)?.textContent ?? null,
+      info: (json.curves ?? [json])[c].info.fit ?? null,
+      fit: JSON.parse(pg.curve_json(c)).fit ?? null,
+      lambdaBox: document.querySelector(`#curves .curve:nth-child(${c + 1}) .fit-lambda input[type=number]`)?.value ?? null,
+      slider: document.querySelector(`#curves .curve:nth-child(${c + 1}) .fit-lambda input[type=range]`)?.value ?? null,
+    };
+  }, c);
+}
+
+/** Moves curve 0's λ slider to log₁₀ λ = `log` as a drag would: input events, then change. */
+async function slideLambda(page, log) {
+  await page.evaluate((log) => {
+    const range = document.querySelector('#curves .curve .fit-lambda input[type=range]');
+    const from = Number(range.value);
+    for (let k = 1; k <= 4; k++) {
+      range.value = String(from + ((log - from) * k) / 4);
+      range.dispatchEvent(new Event('input', { bubbles: true }));
+    }
+    range.dispatchEvent(new Event('change', { bubbles: true }));
+  }, log);
+}
+
+test('fitted examples: λ slider, GCV, target rms, a dragged sample, errors and compare', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  await openPlayground(page, `${origin}/index.html`);
+  const timings = [];
+  for (const name of ['fit_noisy_s2', 'fit_noisy_s3']) {
+    await page.selectOption('#preset', name);
+    assert.equal(await page.textContent('#error'), '', `${name}: no error`);
+    assert.match(await page.textContent('#preset-about'), /sample/, `${name}: described`);
+    let s = await fitState(page);
+    assert.equal(s.fit.smoothing, s.info.lambda, `${name}: the example's λ`);
+    assert.match(s.readout, new RegExp(`^λ = ${s.info.lambda} · rms \\d\\.\\d{3}° · max \\d\\.\\d{3}° · \\d+ keys · edf \\d+\\.\\d$`), `${name}: ${s.readout}`);
+    assert.ok(Math.abs(Number(s.slider) - Math.log10(s.info.lambda)) < 1e-9, `${name}: the slider at log λ`);
+    // A rebuild of the example in the page, with its λ and with GCV (the fit runs in wasm).
+    timings.push(await page.evaluate((name) => {
+      const pg = window.spherekitPage.handle();
+      const text = pg.scene_json();
+      const scene = JSON.parse(text);
+      const gcv = JSON.stringify({ ...scene, fit: { ...scene.fit, smoothing: 'gcv' } });
+      // Each run moves the first sample a little, so that every set_scene rebuilds the fit.
+      const time = (t, n) => {
+        const runs = [];
+        for (let k = 1; k <= n; k++) {
+          const moved = JSON.parse(t);
+          moved.points[0] = moved.points[0].map((x, i) => (i === 1 ? x + 1e-5 * k : x));
+          const moveText = JSON.stringify(moved);
+          const builds = pg.builds();
+          const t0 = performance.now();
+          pg.set_scene(moveText);
+          runs.push(performance.now() - t0);
+          if (pg.builds() === builds) throw new Error('set_scene did not rebuild');
+        }
+        runs.sort((a, b) => a - b);
+        return runs[(n - 1) >> 1];
+      };
+      const given = time(text, 3);
+      const chosen = time(gcv, 1); // a second and a half: once keeps the test quick
+      pg.set_scene(text);
+      return `${name}: rebuild with λ given ${given.toFixed(1)} ms (median of 3), with GCV ${chosen.toFixed(1)} ms`;
+    }, name));
+    const before = await canvasHash(page);
+    await slideLambda(page, 0);
+    s = await fitState(page);
+    assert.equal(s.fit.smoothing, 1, `${name}: λ = 10⁰ from the slider`);
+    assert.match(s.readout, /^λ = 1 · /, `${name}: the readout follows (${s.readout})`);
+    assert.equal(s.lambdaBox, '1');
+    assert.notEqual(await canvasHash(page), before, `${name}: the figure changes`);
+    await page.click('#undo');
+    assert.equal((await fitState(page)).fit.smoothing, JSON.parse((await page.evaluate(() => window.spherekitPage.handle().scene_json()))).fit.smoothing);
+    // GCV: the λ it chose is the one shown, and the slider continues from it.
+    await page.locator('#curves .fit-gcv').click();
+    await page.waitForFunction(() => JSON.parse(window.spherekitPage.handle().curve_json(0)).fit.smoothing === 'gcv');
+    s = await fitState(page);
+    assert.equal(s.fit.smoothing, 'gcv', `${name}: GCV chosen`);
+    assert.equal(await page.textContent('#error'), '', `${name}: GCV converged`);
+    assert.ok(s.readout.startsWith(`λ = ${Number(s.info.lambda.toPrecision(4))} · `), `${name}: the λ GCV chose (${s.info.lambda}) is shown: ${s.readout}`);
+    assert.equal(Number(s.lambdaBox), Number(s.info.lambda.toPrecision(4)), `${name}: the λ box`);
+    assert.ok(Math.abs(Number(s.slider) - Math.log10(s.info.lambda)) < 1e-9, `${name}: the slider at GCV's λ`);
+    await slideLambda(page, Number(s.slider) + 0.5);
+    s = await fitState(page);
+    assert.equal(typeof s.fit.smoothing, 'number', `${name}: the slider gives a λ again`);
+    assert.ok(Math.abs(Math.log10(s.fit.smoothing) - Math.log10(s.info.lambda)) < 1e-9);
+    // A target rms (degrees). (On S³ the core's rms search does not converge on these samples
+    // yet: the page shows its error, as the next step checks for a bad λ.)
+    if (name === 'fit_noisy_s2') {
+      const rms = page.locator('#curves .fit-rms');
+      await rms.fill('0.8');
+      await rms.dispatchEvent('change');
+      s = await fitState(page);
+      assert.equal(await page.textContent('#error'), '', `${name}: the target is met`);
+      assert.ok(Math.abs(s.fit.smoothing.rms - (0.8 * Math.PI) / 180) < 1e-12, `${name}: the target in radians`);
+      assert.match(s.readout, /rms 0\.800°/, `${name}: the fit meets the target (${s.readout})`);
+    }
+    // A bad λ: the page says why beside the control and keeps the scene.
+    const kept = await page.evaluate(() => window.spherekitPage.handle().scene_json());
+    const box = page.locator('#curves .fit-lambda input[type=number]');
+    await box.fill('-1');
+    await box.dispatchEvent('change');
+    assert.match(await page.textContent('#error'), /fit\.smoothing/, `${name}: the error names the field`);
+    assert.equal(await page.evaluate(() => window.spherekitPage.handle().scene_json()), kept, `${name}: the scene is kept`);
+  }
+  console.log(`fit rebuilds in the page:\n  ${timings.join('\n  ')}`);
+  // Dragging a sample moves it and fits again.
+  await page.selectOption('#preset', 'fit_noisy_s2');
+  const was = await fitState(page);
+  const p0 = await page.evaluate(() => Array.from(window.spherekitPage.handle().point(0, 40)));
+  const [x, y] = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 40));
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 30, y - 30, { steps: 6 });
+  await page.mouse.up();
+  const p1 = await page.evaluate(() => Array.from(window.spherekitPage.handle().point(0, 40)));
+  assert.ok(Math.hypot(...p1.map((v, k) => v - p0[k])) > 0.02, `the sample moved (${p0} → ${p1})`);
+  const now = await fitState(page);
+  assert.ok(now.info.residuals[40] > was.info.residuals[40], 'its residual grew');
+  assert.notEqual(now.readout, was.readout, 'the readout follows the drag');
+  // With GCV, λ is held while the sample moves and searched for again when it is let go.
+  await page.locator('#curves .fit-gcv').click();
+  await page.waitForFunction(() => JSON.parse(window.spherekitPage.handle().curve_json(0)).fit.smoothing === 'gcv');
+  const g0 = await page.evaluate(() => Array.from(window.spherekitPage.handle().point(0, 20)));
+  const [gx, gy] = await page.evaluate(() => window.spherekitPage.pointOnScreen(0, 20));
+  await page.mouse.move(gx, gy);
+  await page.mouse.down();
+  await page.mouse.move(gx + 10, gy + 10, { steps: 2 });
+  const held = await fitState(page);
+  assert.equal(typeof held.fit.smoothing, 'number', 'λ held during the drag');
+  await page.mouse.move(gx + 20, gy + 20, { steps: 2 });
+  await page.mouse.up();
+  const after = await fitState(page);
+  assert.equal(after.fit.smoothing, 'gcv', 'GCV again after the drag');
+  assert.equal(await page.textContent('#error'), '');
+  await page.click('#undo');
+  assert.equal((await fitState(page)).fit.smoothing, 'gcv', 'undo: before the drag, with GCV');
+  assert.deepEqual(await page.evaluate(() => Array.from(window.spherekitPage.handle().point(0, 20))), g0, 'undo: the sample back');
+  assert.notEqual(after.info.lambda, held.info.lambda, 'GCV searched again on the moved sample');
+  // Compare with the cubic: the interpolating spline through the samples.
+  await page.selectOption('#new-method', 'cubic');
+  await page.click('#add-curve');
+  assert.equal(await page.textContent('#error'), '');
+  const curves = await page.evaluate(() => [0, 1].map((c) => JSON.parse(window.spherekitPage.handle().curve_json(c))));
+  assert.equal(curves[0].label, 'Cubic spline, fitted');
+  assert.equal(curves[1].label, 'Cubic spline through the samples');
+  assert.equal(curves[1].fit, undefined, 'the second curve interpolates');
+  assert.deepEqual(curves[1].points, curves[0].points, 'the same samples');
+  assert.deepEqual(curves[1].knots, curves[0].knots, 'at the same times');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
+test('the fit switch turns a cubic into the smoothing spline of its points and back', async () => {
+  const page = await newPage({ width: 1280, height: 860 });
+  // The S³ example with scipy's ends instead of a fit: its 64 samples are interpolated.
+  const example = JSON.parse(await readFile(path.join(goldenDir, 'fit_noisy_s3.json'), 'utf8'));
+  delete example.fit;
+  example.params = { end: 'scipy' };
+  await openPlayground(page, sceneUrl(JSON.stringify(example)));
+  assert.equal(await page.locator('[data-fit-readout]').count(), 0, 'no fit readout without a fit');
+  await page.getByLabel('Curve 1 fitted to its points').click();
+  assert.equal(await page.textContent('#error'), '');
+  const curve = JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0)));
+  assert.deepEqual(curve.fit, { smoothing: 'gcv' });
+  assert.equal(curve.params, undefined, 'scipy ends dropped: a fit has natural ends');
+  assert.match(await page.textContent('#curves .note'), /natural ends/);
+  const s = await fitState(page);
+  assert.ok(s.readout.startsWith(`λ = ${Number(s.info.lambda.toPrecision(4))} · `), s.readout);
+  await page.getByLabel('Curve 1 fitted to its points').click();
+  assert.equal(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).fit, undefined);
+  assert.equal(await page.locator('[data-fit-readout]').count(), 0, 'the fit controls go with the fit');
+  assert.deepEqual(page.errors, [], 'no page errors');
+  await page.close();
+});
+
 test('screenshots at 1400×900, 1024×700 and 390×844, device pixel ratio 1 and 2', async () => {
   const s3 = await readFile(path.join(goldenDir, 'compare_s3_squad_catmull_bspline_arcblend.json'), 'utf8');
   const b = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true, args: ['--headless', '--no-sandbox', '--disable-gpu'] });

@@ -17,7 +17,8 @@ import { inSpaces } from './state.js';
  *
  * A parameter that `requires` a choice (the cubic's end velocities with `end: "clamped"`) is
  * set and cleared with that choice and disabled, with the reason, while the choice differs;
- * parameters about the ends (`open_only`) give way to a note on a closed loop.
+ * parameters about the ends (`open_only`) give way to a note on a closed loop; a curve fitted
+ * to its points (`fit`, fit.js) takes natural ends only, so its parameter controls are disabled.
  */
 export function curveControls(c, curve, space, method, edit) {
   const controls = [];
@@ -40,7 +41,9 @@ export function curveControls(c, curve, space, method, edit) {
     else if (spec.type === 'bool') control = [boolControl(spec, value, edit)];
     else if (spec.type === 'vector') control = [vectorControl(spec, value, edit)];
     else control = numberControls(spec, value, n, closed, edit);
-    if (off) for (const el of control) disable(el, off);
+    // A curve fitted to its points (the scene's `fit`) has natural ends, whatever its parameters say.
+    const why = curve.fit ? 'a fitted curve has natural ends' : off;
+    if (why) for (const el of control) disable(el, why);
     controls.push(...control);
   }
   if (ends) {

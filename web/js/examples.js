@@ -52,6 +52,8 @@ const EXAMPLES = {
   figure_s3_axes_legend: ['Tracing chosen body axes', 'Only the body x and z axes are traced.'],
   figure_shared_time_axis: ['Shared time axis', 'Two curves with different domains on one t axis.'],
   figure_title: ['A figure with a title', 'view.title above the sphere.'],
+  fit_noisy_s2: ['Smoothing spline of noisy directions (S²)', 'Eighty samples of a smooth track with 1° of noise: the C² cubic fitted to them passes near the samples (rings) through its own keys (dots). Slide λ or press GCV; the lower plot shows each sample’s residual.'],
+  fit_noisy_s3: ['Smoothing spline of noisy rotations', 'Sixty-four noisy orientations, a quarter of them given as −q (the same rotation): the fitted rotation spline and each sample’s residual angle. Slide λ, press GCV or give a target rms.'],
 };
 
 /** A golden file name as a label when EXAMPLES lacks it: `arc_blend_s2_x` → `arc blend on S² x`. */
@@ -66,14 +68,16 @@ function fileLabel(name) {
 /**
  * The examples as menu groups `[{ group, items: [{ name, label, about, space }] }]`: one group
  * per method, named as the registry names it (a scene with several methods goes to
- * "Comparisons", the figure options to "Figure options"), S² scenes first within a group.
+ * "Comparisons", the figure options to "Figure options", a curve fitted to samples to "Fitted to
+ * samples"), S² scenes first within a group.
  */
 export function exampleGroups(presets, methodOf) {
   const groups = new Map();
   for (const p of presets) {
     const scene = JSON.parse(p.scene);
     const methods = [...new Set((scene.curves ?? [scene]).map((c) => c.method ?? scene.method))];
-    const group = p.name.startsWith('figure_') ? 'Figure options' : methods.length > 1 ? 'Comparisons' : methodOf(methods[0])?.name ?? methods[0];
+    const fitted = (scene.curves ?? [scene]).some((c) => c.fit);
+    const group = p.name.startsWith('figure_') ? 'Figure options' : methods.length > 1 ? 'Comparisons' : fitted ? 'Fitted to samples' : methodOf(methods[0])?.name ?? methods[0];
     const [label, about] = EXAMPLES[p.name] ?? [fileLabel(p.name), methodOf(methods[0])?.summary ?? ''];
     if (!groups.has(group)) groups.set(group, []);
     groups.get(group).push({ name: p.name, label, about, space: scene.space });

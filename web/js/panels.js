@@ -7,6 +7,7 @@ import { viewOptions, redraw, drawOverlay } from './view.js';
 import { curveControls, knotsFor } from './controls.js';
 import { aboutExample } from './examples.js';
 import { sharing, setKey, removeKey } from './keys.js';
+import { fitControls, updateFitReadouts } from './fit.js';
 
 /** A note a curve card shows after an edit (what became of the knots), until the next edit. */
 let cardNote = null;
@@ -43,6 +44,7 @@ export function changed({ panels = true, light = false } = {}) {
     renderContinuity();
   }
   if (panels) renderPanels();
+  else updateFitReadouts(state.pg);
   if (light) readoutSoon();
   else renderReadout();
   updateHistoryButtons();
@@ -230,6 +232,17 @@ function curveCard(c, color, space) {
     q.textContent = `Shares its keys with ${shared === 1 ? 'another curve' : `${shared} other curves`}: moving, adding or deleting a key changes them all.`;
     card.append(q);
   }
+  const fitting = fitControls(pg, c, curve, method, {
+    fit: (fit, opts) => setFit(c, curve, fit, opts),
+    fields: (changes, note) => setCurveField(c, curve, changes, note),
+  });
+  fitting.forEach((el, k) => { el.dataset.key = `c${c}-fit${k}`; });
+  if (fitting.length) {
+    const box = document.createElement('div');
+    box.className = 'fit';
+    box.append(...fitting);
+    card.append(box);
+  }
   const controls = curveControls(c, curve, space, method, {
     param: (name, value, opts) => setParam(c, name, value, opts),
     field: (name, value) => setCurveField(c, curve, { [name]: value }),
@@ -259,7 +272,9 @@ function curveCard(c, color, space) {
 /**
  * "Compare with…": a curve of `method` on the same keys as the active curve (shared: a drag
  * moves both), with its times (the knots, as far as the method takes knots) and its loop
- * setting; each curve labelled with its method's name for the legend.
+ * setting; each curve labelled with its method's name for the legend. The new curve has no
+ * fit: compared with a fitted curve, it is the curve of `method` through the samples (with
+ * the cubic, the interpolating spline that the fit smooths).
  */
 export function compareWith(id) {
   const pg = state.pg;
@@ -275,7 +290,8 @@ export function compareWith(id) {
     const before = pg.scene_json();
     try {
       if (base.label === undefined && pg.curve_count() === 1) {
-        const fields = { ...base, label: from?.name ?? base.method };
+        const name = from?.name ?? base.method;
+        const fields = { ...base, label: base.fit ? `${name}, fitted` : name };
         delete fields.points;
         pg.set_curve(c, JSON.stringify(fields));
       }
@@ -291,7 +307,10 @@ export function compareWith(id) {
         }
         for (let i = points.length - 1; i >= n; i--) pg.remove_point(k, i);
       }
-      const fields = { method: id, label: to?.name ?? id };
+      // A fitted curve's points are samples: the other curve passes through them (for the
+      // cubic, the interpolating spline the fit smooths).
+      const name = to?.name ?? id;
+      const fields = { method: id, label: base.fit ? `${name} through the samples` : name };
       if (closed) fields.closed = true;
       if (knots) fields.knots = knots;
       pg.set_curve(k, JSON.stringify(fields));
@@ -334,6 +353,24 @@ function setParam(c, name, value, { live = false } = {}) {
   else if (!live) {
     changed(); // the scene as it was before the slider moved, and every control with it
   }
+}
+
+/** Sets curve `c`'s fit object (null removes it) and redraws; as `setParam`, the panels follow
+ * unless `live`, and a live slider is recorded for undo once, on release. */
+function setFit(c, curve, fit, { live = false, anchor = eventControl() } = {}) {
+  if (liveBefore === null) liveBefore = state.pg.scene_json();
+  const before = liveBefore;
+  const fields = { ...curve };
+  delete fields.points;
+  if (fit === null) delete fields.fit;
+  else fields.fit = fit;
+  const ok = attempt(() => state.pg.set_curve(c, JSON.stringify(fields)), { anchor, record: false });
+  if (!live) {
+    liveBefore = null;
+    commit(before);
+  }
+  if (ok) changed({ panels: !live, light: live });
+  else if (!live) changed();
 }
 
 /** Replaces fields of curve `c` (`{ name: value }`, null removes one), keeping its points and

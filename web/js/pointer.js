@@ -12,6 +12,7 @@ import { $, state, attempt, commit } from './state.js';
 import { redraw, drawOverlay, plotAt, timeAt, pointOnCanvas, keyAxisOnScreen } from './view.js';
 import { changed, renderPanels, deleteSelected, setTime, stepHistory, linkSoon } from './panels.js';
 import { sharing, moveKeyTo, dragKey, addKeyAt } from './keys.js';
+import { holdSearchedLambda } from './fit.js';
 
 /** Durations (ms) of the last pointer-move handler runs (the bench reads them). */
 export const moveTimes = [];
@@ -56,6 +57,7 @@ function onDown(ev) {
   if (pointers.size === 2) {
     // A second finger: pinch to zoom (the drag in progress stops where it is).
     const [a, b] = [...pointers.values()];
+    releaseHold(drag);
     if (drag?.before !== undefined) commit(drag.before);
     drag = null;
     pinch = { d0: Math.hypot(a[0] - b[0], a[1] - b[1]) || 1, zoom0: state.zoom };
@@ -98,6 +100,10 @@ function onMove(ev) {
       drag.x = x;
       redraw(scrubStep);
     } else if (drag.moved || Math.hypot(x - drag.x0, y - drag.y0) >= 3) {
+      if (!drag.moved && drag.kind === 'point') {
+        const d = drag;
+        attempt(() => { d.release = holdSearchedLambda(state.pg, d.linked); }, { record: false });
+      }
       drag.moved = true;
       drag.x = x;
       drag.y = y;
@@ -120,6 +126,15 @@ function onMove(ev) {
 
 function scrubStep() {
   if (drag?.kind === 'scrub' && drag.x !== undefined) setTime(timeAt(drag.plot, drag.x));
+}
+
+/** A fitted curve whose λ is searched for (GCV, a target rms) keeps the λ last chosen while
+ * one of its samples is dragged (fit.js); when the drag ends, the search runs once more. */
+function releaseHold(d) {
+  if (!d?.release) return;
+  const release = d.release;
+  d.release = null;
+  attempt(release, { record: false });
 }
 
 /** The drag's edit, once per frame, from the latest pointer position. */
@@ -172,6 +187,7 @@ function onUp(ev) {
   state.quick = false;
   if (d.moved) {
     dragStep(d); // the last position, if its frame has not run yet
+    releaseHold(d);
     commit(d.before);
     changed();
     return;
@@ -212,6 +228,7 @@ function onDoubleClick(ev) {
 function onCancel(ev) {
   pointers.delete(ev.pointerId);
   pinch = null;
+  releaseHold(drag);
   if (drag?.before !== undefined) commit(drag.before);
   drag = null;
   state.quick = false;

@@ -39,6 +39,9 @@ pub(crate) enum Shape {
     /// A circle with a white halo: the data points of a second, third, … curve through the
     /// same keys, drawn around the first curve's dots (each curve's wider than the last).
     Ring,
+    /// A small thin circle without a halo, drawn under the curve: the samples a fitted curve
+    /// approximates (its keys, the fitted ones, are dots).
+    Sample,
 }
 
 enum Item {
@@ -68,10 +71,11 @@ impl Sketch {
 
     /// Puts the derived points' markers after every line and the keys' markers last, each in
     /// the order it was added (so that with several curves through the same keys no curve's
-    /// line or control point hides another's key marks).
+    /// line or control point hides another's key marks). Sample marks stay among the lines,
+    /// under the curve they were added before.
     pub(crate) fn markers_last(&mut self) {
         let rank = |m: &Mark| match m {
-            Mark::Line(..) => 0,
+            Mark::Line(..) | Mark::Marker(_, Shape::Sample, ..) => 0,
             Mark::Marker(_, Shape::Square | Shape::Diamond, ..) => 1,
             Mark::Marker(_, Shape::Dot | Shape::Ring, ..) => 2,
         };
@@ -216,6 +220,7 @@ impl Canvas {
                 Item::Marker(_, Shape::Dot | Shape::Ring, ..) => k.dot = true,
                 Item::Marker(_, Shape::Square, ..) => k.square = true,
                 Item::Marker(_, Shape::Diamond, ..) => k.diamond = true,
+                Item::Marker(_, Shape::Sample, ..) => k.sample = true,
                 Item::Line(_, style, false) => {
                     k.far_dashed |= style.back_dashed && style.back_alpha > 0.0;
                 }
@@ -279,6 +284,7 @@ pub(crate) struct Kinds {
     pub(crate) dot: bool,
     pub(crate) square: bool,
     pub(crate) diamond: bool,
+    pub(crate) sample: bool,
     pub(crate) far_dashed: bool,
 }
 
@@ -377,10 +383,11 @@ pub(crate) fn draw_marker(
         surface.paint(color, alpha);
         return;
     }
-    if shape == Shape::Ring {
+    if matches!(shape, Shape::Ring | Shape::Sample) {
         // Two open halves, painted one by one: the stroke of a closed loop would fill its
-        // inside.
-        let width = (0.12 * size).max(1.0);
+        // inside. A sample's circle is small, so its line is a larger part of it.
+        let share = if shape == Shape::Ring { 0.12 } else { 0.2 };
+        let width = (share * size).max(1.0);
         let half = |from: usize| -> Vec<Point> {
             (from..=from + 16)
                 .map(|k| {
@@ -391,10 +398,14 @@ pub(crate) fn draw_marker(
                 .collect()
         };
         let halves = [half(0), half(16)];
-        for (pen, color, alpha) in [
-            (Pen::round(3.0 * width), [0xff; 3], alpha),
-            (Pen::round(width), color, alpha),
-        ] {
+        let halo = (Pen::round(3.0 * width), [0xff; 3], alpha);
+        let line = (Pen::round(width), color, alpha);
+        let pens = if shape == Shape::Ring {
+            &[halo, line][..]
+        } else {
+            &[line][..]
+        };
+        for &(pen, color, alpha) in pens {
             for arc in &halves {
                 surface.polyline(arc, pen);
                 surface.paint(color, alpha);

@@ -143,7 +143,7 @@ pub(crate) fn draw(surface: &mut dyn Surface, entries: &[Entry], top: f32, size:
             Swatch::Marker(shape, color) => {
                 let size = match shape {
                     Shape::Dot | Shape::Ring => 8.0,
-                    Shape::Square => 6.0,
+                    Shape::Square | Shape::Sample => 6.0,
                     Shape::Diamond => 7.0,
                 } * scale;
                 draw_marker(

@@ -318,6 +318,7 @@ impl Prepared {
         let omega = view.plot == Plot::Omega;
         let mut speeds = Vec::new();
         let mut components = Vec::new();
+        let mut residuals = Vec::new();
         for (i, (style, curve)) in layers.styles.iter().zip(curves).enumerate() {
             let color = layers.color(i);
             let key = key_marker(i, single, color);
@@ -327,6 +328,7 @@ impl Prepared {
                     draw_points(&mut sketch, b, color, key, polygon, view, &|p: &S2Point| {
                         p.as_dvec3()
                     });
+                    residuals.extend(residual_series(b, color, normalized));
                     sample(&*b.curve, size, normalized, &|j| {
                         let v = j.velocity;
                         [v.length(), v.x, v.y, v.z]
@@ -335,12 +337,14 @@ impl Prepared {
                 BuiltCurve::Sm(b) => {
                     let embed = |p: &SmPoint| DVec3::new(p.coords()[0], p.coords()[1], 0.0);
                     draw_points(&mut sketch, b, color, key, polygon, view, &embed);
+                    residuals.extend(residual_series(b, color, normalized));
                     sample(&*b.curve, size, normalized, &|j| {
                         [j.velocity.length(), 0.0, 0.0, 0.0]
                     })
                 }
                 BuiltCurve::S3(b) => {
                     draw_rotations(&mut sketch, b, color, key, single, view);
+                    residuals.extend(residual_series(b, color, normalized));
                     // |ω| = 2|q′| (the half-angle factor); ω in the space or the body frame.
                     let body = view.omega_body;
                     sample(&*b.curve, size, normalized, &|j| {
@@ -381,6 +385,14 @@ impl Prepared {
                 time: if normalized { "u" } else { "t" },
                 signed: true,
                 series: components,
+            });
+        }
+        if view.plot != Plot::None && !residuals.is_empty() {
+            panels_content.push(plot::Panel {
+                quantity: residual_label(s3),
+                time: if normalized { "u" } else { "t" },
+                signed: false,
+                series: residuals,
             });
         }
         let time = if normalized {
@@ -598,6 +610,17 @@ fn speed_label(s3: bool, normalized: bool) -> String {
     }
 }
 
+/// The residual plot's title: the angle (on S³ the rotation angle) from each sample to the
+/// curve.
+fn residual_label(s3: bool) -> String {
+    let kind = if s3 {
+        "rotation residual"
+    } else {
+        "residual angle"
+    };
+    format!("{kind} per sample (degrees, dashed: rms)")
+}
+
 fn component_label(s3: bool, body: bool, normalized: bool) -> String {
     let unit = if normalized { "u" } else { "t" };
     let frame = if body { "body" } else { "space" };
@@ -672,7 +695,17 @@ fn legend_entries(
     let kinds = canvas.kinds();
     let mark = POINT_COLOR;
     if kinds.dot {
-        out.push(entry(Swatch::Marker(Shape::Dot, mark), "key", 3));
+        // With a curve through the samples beside a fitted one, keys are of both kinds.
+        let fitted = layers.curves.iter().all(|c| c.fit_report().is_some());
+        let key = if fitted { "key (fitted)" } else { "key" };
+        out.push(entry(Swatch::Marker(Shape::Dot, mark), key, 3));
+    }
+    if kinds.sample {
+        out.push(entry(
+            Swatch::Marker(Shape::Sample, mark),
+            "sample (fitted to)",
+            3,
+        ));
     }
     if kinds.square {
         out.push(entry(
@@ -849,6 +882,56 @@ fn key_marker(i: usize, single: bool, color: Rgb) -> (Shape, Rgb, f32) {
     }
 }
 
+/// The size of a fitted curve's sample marks (pixels at 512 px).
+const SAMPLE_SIZE: f32 = 6.0;
+
+/// A fitted curve's key marks: `key` at most [`FITTED_KEY_SIZE`] pixels (at 512 px), since a
+/// fit usually has a key at every sample, close together.
+const FITTED_KEY_SIZE: f32 = 4.5;
+
+fn fitted_key(key: (Shape, Rgb, f32)) -> (Shape, Rgb, f32) {
+    (key.0, key.1, key.2.min(FITTED_KEY_SIZE))
+}
+
+/// The residual plot's series of a fitted curve: a stem from zero to each sample's residual
+/// (degrees) at its time, and its rms as a dashed line across the samples' times; none for a
+/// curve without a fit, or one whose parameter is not the fit's time (an arc-length
+/// reparametrisation), where the samples have no place on the plot's time axis.
+fn residual_series<P: Manifold>(b: &Built<P>, color: Rgb, normalized: bool) -> Vec<plot::Series> {
+    let Some(fit) = &b.fit else {
+        return Vec::new();
+    };
+    let [t0, t1] = b.curve.domain();
+    let (Some(&first), Some(&last)) = (fit.times.first(), fit.times.last()) else {
+        return Vec::new();
+    };
+    if first != t0 || last != t1 || t1 <= t0 {
+        return Vec::new();
+    }
+    let unit = |t: f64| if normalized { (t - t0) / (t1 - t0) } else { t };
+    let stems = fit
+        .times
+        .iter()
+        .zip(&fit.residuals)
+        .map(|(&t, &r)| vec![(unit(t), 0.0), (unit(t), r.to_degrees())])
+        .collect();
+    let rms = fit.report.rms.to_degrees();
+    vec![
+        plot::Series {
+            color,
+            dash: None,
+            pieces: stems,
+            joints: Vec::new(),
+        },
+        plot::Series {
+            color,
+            dash: Some([5.0, 3.0]),
+            pieces: vec![vec![(unit(first), rms), (unit(last), rms)]],
+            joints: Vec::new(),
+        },
+    ]
+}
+
 /// A curve on S² (or S¹ on the equator): the curve, its points (`key`: how they are marked),
 /// derived points and polygons.
 fn draw_points<P: Manifold>(
@@ -869,6 +952,11 @@ fn draw_points<P: Manifold>(
     };
     let pts = flatten::flatten(&f, b.curve.joints(), 8, view.accuracy);
     let input: Vec<DVec3> = b.inputs.iter().map(embed).collect();
+    // A fitted curve passes near its points, the samples, and through its fitted keys.
+    let keys: Vec<DVec3> = b
+        .fit
+        .as_ref()
+        .map_or_else(|| input.clone(), |fit| fit.keys.iter().map(embed).collect());
     let controls: Vec<DVec3> = b.controls.iter().map(embed).collect();
     let aux: Vec<DVec3> = b.auxiliary.iter().map(embed).collect();
     // A closed curve's polygons close too (its controls already end where they start).
@@ -886,6 +974,11 @@ fn draw_points<P: Manifold>(
     }
     arcs(canvas, &controls, polygon_style(color));
     arcs(canvas, &closing(&aux), polygon_style(color));
+    if b.fit.is_some() {
+        for p in &input {
+            canvas.marker(*p, Shape::Sample, key.1, SAMPLE_SIZE);
+        }
+    }
     canvas.polyline(&pts, curve_style(color));
     for p in &controls {
         canvas.marker(*p, Shape::Square, color, 6.0);
@@ -893,7 +986,12 @@ fn draw_points<P: Manifold>(
     for p in &aux {
         canvas.marker(*p, Shape::Diamond, color, 7.0);
     }
-    for p in &input {
+    let key = if b.fit.is_some() {
+        fitted_key(key)
+    } else {
+        key
+    };
+    for p in &keys {
         canvas.marker(*p, key.0, key.1, key.2);
     }
 }
@@ -919,12 +1017,27 @@ fn draw_rotations(
             }
         };
         let pts = flatten::flatten(&f, b.curve.joints(), 8, view.accuracy);
+        if b.fit.is_some() {
+            for q in &b.inputs {
+                canvas.marker(q.rotate(axis), Shape::Sample, c, SAMPLE_SIZE);
+            }
+        }
         canvas.polyline(&pts, curve_style(c));
         for q in &b.controls {
             canvas.marker(q.rotate(axis), Shape::Square, c, 5.0);
         }
-        for q in &b.inputs {
-            canvas.marker(q.rotate(axis), key.0, c, key.2);
+        match &b.fit {
+            Some(fit) => {
+                let key = fitted_key(key);
+                for q in &fit.keys {
+                    canvas.marker(q.rotate(axis), key.0, c, key.2);
+                }
+            }
+            None => {
+                for q in &b.inputs {
+                    canvas.marker(q.rotate(axis), key.0, c, key.2);
+                }
+            }
         }
     }
     if view.frames > 0 {
