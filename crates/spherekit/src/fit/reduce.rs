@@ -146,25 +146,9 @@ pub(super) fn reduce<Q: Manifold>(
     smoothing: &Smoothing,
 ) -> Result<Fitted<Q::Vector>, SplineError> {
     let n = problem.points.len();
-    let mut idx = start_keys(problem);
+    let idx = start_keys(problem);
     let mut iterations = 0;
-    // A least-squares fit on keys far apart may not converge from the samples at the keys:
-    // then every segment is halved until it does.
-    let mut fitted = loop {
-        match problem.fitted(&idx, smoothing, None) {
-            Ok(f) => break f,
-            Err(e) if idx.len() == n => return Err(e),
-            Err(_) => {
-                let mids: Vec<usize> = idx
-                    .windows(2)
-                    .map(|w| (w[0] + w[1]) / 2)
-                    .chain(idx.last().map(|&l| (l + n) / 2).filter(|_| problem.closed))
-                    .collect();
-                idx.extend(mids);
-                idx = symmetric(problem, idx);
-            }
-        }
-    };
+    let (mut idx, mut fitted) = fit_or_halve(problem, idx, smoothing)?;
     iterations += fitted.report.iterations;
     loop {
         let worst = segment_errors(problem, &idx, &fitted)?;
@@ -191,8 +175,7 @@ pub(super) fn reduce<Q: Manifold>(
         }
         idx.extend(added);
         idx = symmetric(problem, idx);
-        let start = idx.iter().map(|&i| problem.points[i].clone()).collect();
-        fitted = problem.fitted(&idx, smoothing, Some(start))?;
+        (idx, fitted) = fit_or_halve(problem, idx, smoothing)?;
         iterations += fitted.report.iterations;
         if idx.len() == n {
             break;
@@ -291,4 +274,29 @@ fn removal_pass<Q: Manifold>(
         }
     }
     Ok((idx, fitted))
+}
+
+/// The fit on the keys `idx`; while it does not converge from the samples at the keys (keys far
+/// apart), every segment halved.
+fn fit_or_halve<Q: Manifold>(
+    problem: &Samples<Q>,
+    mut idx: Vec<usize>,
+    smoothing: &Smoothing,
+) -> Result<(Vec<usize>, Fitted<Q::Vector>), SplineError> {
+    let n = problem.points.len();
+    loop {
+        match problem.fitted(&idx, smoothing, None) {
+            Ok(f) => return Ok((idx, f)),
+            Err(e) if idx.len() == n => return Err(e),
+            Err(_) => {
+                let mids: Vec<usize> = idx
+                    .windows(2)
+                    .map(|w| (w[0] + w[1]) / 2)
+                    .chain(idx.last().map(|&l| (l + n) / 2).filter(|_| problem.closed))
+                    .collect();
+                idx.extend(mids);
+                idx = symmetric(problem, idx);
+            }
+        }
+    }
 }

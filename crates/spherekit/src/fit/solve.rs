@@ -34,6 +34,9 @@ const MAX_ITERATIONS: usize = 100;
 /// objective (the squared Newton decrement, relative): below the objective's own rounding.
 /// The step is then still taken when it does not increase the objective.
 pub(crate) const DECREMENT: f64 = 1e-15;
+/// A step that decreases the objective by at most this fraction of it ends the iteration.
+const STALL: f64 = 1e-13;
+
 /// How a solve stops.
 #[derive(Clone, Copy)]
 pub(crate) enum Until {
@@ -278,7 +281,11 @@ impl<P: Manifold> Samples<P> {
             if !found && !converged && predicted > ROUNDING * objective + floor {
                 return Err(no_convergence(iterations, objective));
             }
-            if converged || !found || matches!(until, Until::Steps(k) if iterations >= k) {
+            // Stalled at the accuracy of the differenced Jacobians: the step taken decreased
+            // the objective by less than 1e-13 of itself (the model's prediction is then noise).
+            let stalled = found && objective - (rss + lambda * energy) <= STALL * objective;
+            if converged || stalled || !found || matches!(until, Until::Steps(k) if iterations >= k)
+            {
                 break;
             }
             if iterations >= MAX_ITERATIONS {
