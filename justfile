@@ -77,9 +77,13 @@ doc:
 
 # The library crates as crates.io would take them: `cargo publish --dry-run` packages spherekit,
 # spherekit-scene and spherekit-render together (each against the others' packaged sources) and
-# compiles each from its package; uncommitted changes are included
+# compiles each from its package; uncommitted changes are included. Cargo takes registry crates
+# to be immutable: it unpacks each packaged crate once per version under $CARGO_HOME/registry/src
+# and never rebuilds a compiled one, so a rerun after a change would verify against the earlier
+# package. Hence a target directory of its own, emptied first, and the unpacked copies removed.
 publish-check:
-    cargo publish --dry-run --locked --allow-dirty -p spherekit -p spherekit-scene -p spherekit-render
+    rm -rf target/publish-check "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/spherekit-[0-9]* "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/spherekit-scene-[0-9]* "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/spherekit-render-[0-9]*
+    cargo publish --dry-run --locked --allow-dirty --target-dir target/publish-check -p spherekit -p spherekit-scene -p spherekit-render
 
 # Find repeated code (a tool of the development machines)
 duplicates:
