@@ -1017,7 +1017,9 @@ test('compare with another method: shared keys, the same times and loop, a key m
   assert.deepEqual((await curve(0)).knots, [0, 1, 3, 4, 6, 7.5], 'the knots stay, and the return comes one mean spacing later');
   assert.match(await page.textContent('#curves .curve .note'), /keeps its time.*t = 7\.5/);
   // Comparing a closed curve gives a closed curve.
-  await page.locator('#curves .curve').first().click();
+  // (Selecting the card by its top-left corner: its middle holds controls, such as the loop box.)
+  await page.locator('#curves .curve').first().click({ position: { x: 4, y: 4 } });
+  assert.equal(JSON.parse(await page.evaluate(() => window.spherekitPage.handle().curve_json(0))).closed, true, 'selecting the card changes nothing');
   await page.selectOption('#new-method', 'geodesic');
   await page.click('#add-curve');
   const g = await curve(2);
