@@ -62,11 +62,18 @@ fn reinsch_values(t: &[f64], y: &[f64], w: &[f64], lambda: f64) -> Vec<f64> {
             r[(a + 1) * m + a] = h[j] / 6.0;
         }
     }
+    smoothing_values(&q, &r, m, y, w, lambda)
+}
+
+/// The smoothing spline's values from Reinsch's `Q` (`n × m`) and `R` (`m × m`): the dense
+/// solve of `(W + λ·Q R⁻¹ Qᵀ) g = W y`.
+fn smoothing_values(q: &[f64], r: &[f64], m: usize, y: &[f64], w: &[f64], lambda: f64) -> Vec<f64> {
+    let n = y.len();
     // K = Q R⁻¹ Qᵀ, column by column.
     let mut k = vec![0.0; n * n];
     for col in 0..n {
         let rhs: Vec<f64> = (0..m).map(|a| q[col * m + a]).collect();
-        let z = dense_solve(r.clone(), rhs, m);
+        let z = dense_solve(r.to_vec(), rhs, m);
         for row in 0..n {
             k[row * n + col] = (0..m).map(|a| q[row * m + a] * z[a]).sum();
         }
@@ -670,22 +677,7 @@ fn periodic_reinsch_values(t: &[f64], y: &[f64], w: &[f64], lambda: f64) -> Vec<
         r[j * n + next] += h[j] / 6.0;
         r[next * n + j] += h[j] / 6.0;
     }
-    let mut k = vec![0.0; n * n];
-    for col in 0..n {
-        let rhs: Vec<f64> = (0..n).map(|a| q[col * n + a]).collect();
-        let z = dense_solve(r.clone(), rhs, n);
-        for row in 0..n {
-            k[row * n + col] = (0..n).map(|a| q[row * n + a] * z[a]).sum();
-        }
-    }
-    let mut sys = vec![0.0; n * n];
-    for i in 0..n {
-        for j in 0..n {
-            sys[i * n + j] = lambda * k[i * n + j] + if i == j { w[i] } else { 0.0 };
-        }
-    }
-    let rhs = (0..n).map(|i| w[i] * y[i]).collect();
-    dense_solve(sys, rhs, n)
+    smoothing_values(&q, &r, n, y, w, lambda)
 }
 
 #[test]
