@@ -3,7 +3,8 @@
 
 //! A curve's `"fit"`: the scene's `points` are measured samples at the times `knots`, and the
 //! curve is the cubic spline fitted to them ([`CubicSpline::try_fit`]: the smoothing spline, or
-//! a spline on fewer keys), with natural ends or closed.
+//! a spline on fewer keys): closed, or open with natural ends (a key at every sample) or with
+//! fitted end velocities (fewer keys).
 //!
 //! ```text
 //! "fit": { "smoothing": λ | "gcv" | { "rms": σ },   optional; default "gcv" with a key at every
@@ -13,8 +14,8 @@
 //!          "keys": m }                               optional; m keys (not with max_error)
 //! ```
 //!
-//! Only `"method": "cubic"` fits, with its default (natural) ends: the fit's `params` may give
-//! `"end": "natural"` and nothing else. On S³ the samples are rotations (`q` and `−q` the same
+//! Only `"method": "cubic"` fits, and the fit sets the ends: the fit's `params` may give the
+//! cubic's default `"end": "natural"` and nothing else. On S³ the samples are rotations (`q` and `−q` the same
 //! sample) and every distance is a rotation angle; a closed S³ fit is a loop in SO(3)
 //! ([`CubicSpline::try_fit_loop`]): samples that, taken the shorter way round, end on the far
 //! side of the first (a loop of an odd number of turns, [`spherekit::closes_at_antipode`]) are
@@ -258,7 +259,7 @@ pub(crate) fn build(
     Ok(built)
 }
 
-/// Only the cubic's default ends: the fit has natural ends (or is closed).
+/// Only the cubic's default ends: the fit sets its ends.
 fn check_params(params: &Map<String, Value>) -> Result<(), SceneError> {
     for (k, v) in params {
         if k == "end" && v.as_str() == Some("natural") {
@@ -266,7 +267,7 @@ fn check_params(params: &Map<String, Value>) -> Result<(), SceneError> {
         }
         return Err(field_error(
             format!("params.{k}"),
-            "does not apply with \"fit\": the fitted spline has natural ends (or is closed)",
+            "does not apply with \"fit\": the fit sets the ends (natural with a key at every sample, fitted velocities with fewer keys)",
         ));
     }
     Ok(())

@@ -6,7 +6,8 @@
 //! and key reduction within an error bound.
 //!
 //! The problem (samples `yᵢ` at times `tᵢ`, weights `wᵢ > 0`): the curve `c` of the
-//! [`CubicSpline`] family (keys at key times, natural ends or closed) that minimises
+//! [`CubicSpline`] family (keys at key times; closed, or open with natural ends when every
+//! sample is a key and fitted end velocities when the keys are fewer) that minimises
 //!
 //! ```text
 //! F(c) = Σ wᵢ·d(c(tᵢ), yᵢ)² + λ·E(c),   E(c) = Σₖ ∫ |vₖ″(t)|² dt,
@@ -70,10 +71,13 @@ pub enum FitKeys {
     #[default]
     Samples,
     /// This many keys among the sample times, as evenly spread over the samples as the times
-    /// allow (the first and last sample always keys; closed: the first).
+    /// allow (the first and last sample always keys; closed: the first). With fewer keys than
+    /// samples an open fit's end velocities are fitted too ([`CubicEnd::Clamped`]): the
+    /// least-squares curve among all cubics on the keys.
     Count(usize),
-    /// The fewest keys among the sample times whose fit stays within this distance (radians) of
-    /// every sample and of the samples' geodesic interpolation midway between samples.
+    /// The fewest keys among the sample times whose fit (as for [`Count`](Self::Count)) stays
+    /// within this distance (radians) of every sample and of the samples' geodesic
+    /// interpolation midway between samples.
     MaxError(f64),
 }
 
@@ -161,8 +165,8 @@ impl<P: Manifold> CubicSpline<P> {
         options: &FitOptions,
         closed: bool,
     ) -> Result<(Self, FitReport), SplineError> {
-        let (points, knots, report) = fit_points(samples, times, options, closed, None)?;
-        let curve = Self::try_new(points, Some(knots), CubicEnd::Natural, closed)?;
+        let (points, knots, end, report) = fit_points(samples, times, options, closed, None)?;
+        let curve = Self::try_new(points, Some(knots), end, closed)?;
         Ok((curve, report))
     }
 }
@@ -215,10 +219,10 @@ impl CubicSpline<UnitQuat> {
         let mut report = None;
         let curve = RotationLoop::try_new(shortest, Some(times), |keys, knots| {
             let half = (keys.len() == 2 * n).then_some(n);
-            let (points, knots, r) =
+            let (points, knots, end, r) =
                 fit_points(keys, knots.unwrap_or_default(), options, true, half)?;
             report = Some(r);
-            Self::try_new(points, Some(knots), CubicEnd::Natural, true)
+            Self::try_new(points, Some(knots), end, true)
         })?;
         let report = report.ok_or(SplineError::TooFewPoints { min: 3, got: n })?;
         Ok((curve, report))
@@ -226,40 +230,47 @@ impl CubicSpline<UnitQuat> {
 }
 
 /// The fit of `samples` (with the `compact` feature on S^m): the fitted keys, their times
-/// (closed: and the return time) and the report. `half`: the samples are a doubled
-/// antiperiodic loop of `half` samples given.
+/// (closed: and the return time), the end condition and the report. `half`: the samples are a
+/// doubled antiperiodic loop of `half` samples given.
 fn fit_points<P: Manifold>(
     samples: Vec<P>,
     times: Vec<f64>,
     options: &FitOptions,
     closed: bool,
     half: Option<usize>,
-) -> Result<(Vec<P>, Vec<f64>, FitReport), SplineError> {
+) -> Result<(Vec<P>, Vec<f64>, CubicEnd<P::Vector>, FitReport), SplineError> {
     let vectors: Vec<P::Vector> = samples.iter().map(Manifold::to_vector).collect();
     #[cfg(feature = "compact")]
-    let (keys, knots, report) = {
+    let (keys, knots, ends, report) = {
         use crate::sm::SmPoint;
         let vectors = vectors
             .iter()
             .map(|v| crate::ambient::VecN::new(v.to_vec()))
             .collect();
-        let (keys, knots, report) =
+        let (keys, knots, ends, report) =
             fit::<SmPoint>(vectors, times, options, closed, P::SPEED_SCALE, half)?;
         let like = samples[0].to_vector();
-        let keys: Vec<P::Vector> = keys
-            .iter()
-            .map(|k| like.with_coords(k.as_slice()))
-            .collect();
-        (keys, knots, report)
+        let to = |k: &crate::ambient::VecN| like.with_coords(k.as_slice());
+        let keys: Vec<P::Vector> = keys.iter().map(to).collect();
+        (keys, knots, ends.map(|(a, b)| (to(&a), to(&b))), report)
     };
     #[cfg(not(feature = "compact"))]
-    let (keys, knots, report) = fit::<P>(vectors, times, options, closed, P::SPEED_SCALE, half)?;
+    let (keys, knots, ends, report) =
+        fit::<P>(vectors, times, options, closed, P::SPEED_SCALE, half)?;
     let points = keys.into_iter().map(P::from_vector_unchecked).collect();
-    Ok((points, knots, report))
+    let end = match ends {
+        Some((start_velocity, end_velocity)) => CubicEnd::Clamped {
+            start_velocity,
+            end_velocity,
+        },
+        None => CubicEnd::Natural,
+    };
+    Ok((points, knots, end, report))
 }
 
-/// Fitted keys, their times (closed: and the return time) and the report.
-type KeysAndReport<V> = (Vec<V>, Vec<f64>, FitReport);
+/// Fitted keys, their times (closed: and the return time), the fitted end velocities (open,
+/// with fewer keys than samples) and the report.
+type KeysAndReport<V> = (Vec<V>, Vec<f64>, Option<(V, V)>, FitReport);
 
 /// The fit on `Q`'s vectors: the fitted keys, their times and the report.
 fn fit<Q: Manifold>(
@@ -397,7 +408,7 @@ fn fit<Q: Manifold>(
         report.key_times.push(problem.times[given]);
         report.residuals.truncate(given);
     }
-    Ok((fitted.keys, knots, report))
+    Ok((fitted.keys, knots, fitted.ends, report))
 }
 
 fn invalid(name: &'static str, reason: String) -> SplineError {
@@ -407,6 +418,9 @@ fn invalid(name: &'static str, reason: String) -> SplineError {
 /// A fit on given keys, with its report.
 pub(crate) struct Fitted<V> {
     pub(crate) keys: Vec<V>,
+    /// The end velocities of an open curve with fewer keys than samples (fitted too), else
+    /// `None` (natural ends).
+    pub(crate) ends: Option<(V, V)>,
     pub(crate) report: FitReport,
     /// The key times (closed: and the return time).
     pub(crate) knots: Vec<f64>,
@@ -463,8 +477,13 @@ impl<Q: Manifold> Samples<Q> {
             .iter()
             .map(Manifold::to_vector)
             .collect();
+        let velocities = solved.curve.key_velocities();
+        let ends = self
+            .free_ends(idx)
+            .then(|| (velocities[0].clone(), velocities[velocities.len() - 1].clone()));
         Ok(Fitted {
             keys,
+            ends,
             report: FitReport {
                 lambda,
                 rms: (rss / total).sqrt(),

@@ -84,7 +84,7 @@ fn segment_errors<Q: Manifold>(
     fitted: &Fitted<Q::Vector>,
 ) -> Result<Vec<(f64, usize)>, SplineError> {
     let n = problem.points.len();
-    let curve = problem.build(idx, &fitted.keys)?;
+    let curve = problem.build(idx, &fitted.keys, fitted.ends.as_ref())?;
     let mut worst = vec![(0.0_f64, 0_usize); idx.len()];
     let mut seg = 0;
     for i in 0..n {

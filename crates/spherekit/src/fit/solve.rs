@@ -9,8 +9,10 @@
 //! `μₖ` of the key's continuity row. Residuals: `s·√wᵢ·Log_{yᵢ}(c(tᵢ))` per sample and
 //! `s·√λ·(2b + 3c, √3·c)/h^{3/2}` per segment (whose squares sum to `s²λ∫|v″|²`, `s` the speed
 //! scale); constraints: the tangential acceleration jump at every interior key (every key of a
-//! closed curve), and the tangential acceleration at the two ends of an open curve (natural
-//! ends). Every residual of segment `k` depends on keys `k` and `k + 1` only, every constraint
+//! closed curve), and the tangential acceleration at the two ends of an open curve with a key at
+//! every sample (natural ends). With fewer keys than samples an open curve's end velocities are
+//! free (the least-squares curve among all cubics on the keys, clamped at the fitted
+//! velocities): no end rows, and the end velocities' steps are taken with the keys'. Every residual of segment `k` depends on keys `k` and `k + 1` only, every constraint
 //! row on keys `k − 1 … k + 1`, so the KKT matrix ordered by key, `[δpₖ, δVₖ, μₖ]`, is block
 //! tridiagonal (cyclic when closed) with blocks of `3d` (`d` the tangent dimension), factorised
 //! by [`BlockTridiagonal`] in O(n). The Jacobian of each segment's residuals and constraints is
@@ -117,19 +119,30 @@ impl<P: Manifold> Samples<P> {
         knots
     }
 
-    /// The cubic through the keys `p` at the key times of `idx`.
+    /// Whether the fit on the keys `idx` has free end velocities: an open curve with fewer keys
+    /// than samples (the least-squares curve among all cubics on the keys; with a key at every
+    /// sample the ends are natural, the smoothing spline's own end condition).
+    pub(crate) fn free_ends(&self, idx: &[usize]) -> bool {
+        !self.closed && idx.len() < self.points.len()
+    }
+
+    /// The cubic through the keys `p` at the key times of `idx`: with the end velocities `ends`
+    /// (clamped), or natural ends.
     pub(crate) fn build(
         &self,
         idx: &[usize],
         p: &[P::Vector],
+        ends: Option<&(P::Vector, P::Vector)>,
     ) -> Result<CubicSpline<P>, SplineError> {
         let points = p.iter().cloned().map(P::from_vector_unchecked).collect();
-        CubicSpline::try_new(
-            points,
-            Some(self.key_times(idx)),
-            CubicEnd::Natural,
-            self.closed,
-        )
+        let end = match ends {
+            Some((start, end)) => CubicEnd::Clamped {
+                start_velocity: start.clone(),
+                end_velocity: end.clone(),
+            },
+            None => CubicEnd::Natural,
+        };
+        CubicSpline::try_new(points, Some(self.key_times(idx)), end, self.closed)
     }
 
     /// The scaled residual vector `s·Log_y(c)` of a sample (the sign of `y` nearest `c` for
@@ -199,9 +212,11 @@ impl<P: Manifold> Samples<P> {
         until: Until,
     ) -> Result<Solved<P>, SplineError> {
         let mut dist = vec![0.0; self.points.len()];
+        let free = self.free_ends(idx);
         let (mut p, mut curve, mut rss, mut energy) = match start {
             Start::Keys(p) => {
-                let curve = self.build(idx, &p)?;
+                // From the natural cubic on the keys.
+                let curve = self.build(idx, &p, None)?;
                 let (rss, energy) = self.evaluate(idx, &curve, &mut dist);
                 (p, curve, rss, energy)
             }
@@ -222,13 +237,19 @@ impl<P: Manifold> Samples<P> {
             });
         }
         let mut system = Kkt::new(idx.len(), d, self.closed);
+        let last = idx.len() - 1;
         loop {
             let objective = rss + lambda * energy;
             let frames: Vec<Vec<P::Vector>> = p.iter().map(tangent_frame).collect();
             let velocities = curve.key_velocities().to_vec();
             system.clear();
             for k in 0..curve.segment_count() {
-                self.linearise(lambda, idx, k, &p, &velocities, &frames, &mut system);
+                self.linearise(lambda, idx, k, &p, &velocities, &frames, free, &mut system);
+            }
+            if free {
+                // No end rows: the end velocities are unknowns like the keys.
+                system.no_constraint(0);
+                system.no_constraint(last);
             }
             let Some(step) = system.solve() else {
                 return Err(no_convergence(iterations, objective));
@@ -250,7 +271,19 @@ impl<P: Manifold> Samples<P> {
             let mut accepted = None;
             for _ in 0..40 {
                 let trial = retract(&p, &frames, &step.x, alpha);
-                if let Ok(c) = self.build(idx, &trial) {
+                let ends = free.then(|| {
+                    let moved = |k: usize| {
+                        let mut v = velocities[k].clone();
+                        for (j, e) in frames[k].iter().enumerate() {
+                            v += e.clone() * (alpha * step.x[k * 2 * d + d + j]);
+                        }
+                        // Tangent at the moved key.
+                        let q = &trial[k];
+                        v.clone() - q.clone() * q.dot(&v)
+                    };
+                    (moved(0), moved(last))
+                });
+                if let Ok(c) = self.build(idx, &trial, ends.as_ref()) {
                     let (r, e) = self.evaluate(idx, &c, &mut dist);
                     let value = r + lambda * e;
                     let target = if converged {
@@ -314,6 +347,7 @@ impl<P: Manifold> Samples<P> {
         p: &[P::Vector],
         v: &[P::Vector],
         frames: &[Vec<P::Vector>],
+        free: bool,
         system: &mut Kkt,
     ) {
         let n = idx.len();
@@ -445,15 +479,14 @@ impl<P: Manifold> Samples<P> {
         let end_rows = &jac[(nres + d) * m..(nres + 2 * d) * m];
         let start_val = &value[nres..nres + d];
         let end_val = &value[nres + d..nres + 2 * d];
-        let natural_start = !self.closed && k == 0;
-        system.add_constraint(
-            k,
-            k,
-            if natural_start { 1.0 } else { -1.0 },
-            start_rows,
-            start_val,
-        );
-        system.add_constraint(k1, k, 1.0, end_rows, end_val);
+        let first = !self.closed && k == 0;
+        let last = !self.closed && k1 == n - 1;
+        if !(first && free) {
+            system.add_constraint(k, k, if first { 1.0 } else { -1.0 }, start_rows, start_val);
+        }
+        if !(last && free) {
+            system.add_constraint(k1, k, 1.0, end_rows, end_val);
+        }
     }
 }
 
@@ -618,6 +651,15 @@ impl Kkt {
         }
         for (r, v) in value.iter().enumerate() {
             self.rhs[row * b + d2 + r] -= sign * v;
+        }
+    }
+
+    /// No continuity row at key `k` (its multiplier fixed at 0): a free end.
+    fn no_constraint(&mut self, k: usize) {
+        let (d, b) = (self.d, 3 * self.d);
+        let block = self.block(k, k);
+        for r in 0..d {
+            block[(2 * d + r) * b + 2 * d + r] = 1.0;
         }
     }
 

@@ -769,3 +769,83 @@ fn a_full_turn_orbit_is_fitted_as_a_loop_in_so3() {
         }
     }
 }
+
+/// The Euclidean penalised least-squares cubic spline with the knots `knots` (all cubic splines
+/// on them, ends free) at the times `t`: minimising `Σ wᵢ(yᵢ − g(tᵢ))² + λ∫g″²` over the
+/// truncated-power basis `1, u, u², u³, (u − κⱼ)³₊` (`u` the time scaled to [0, 1]), by a dense
+/// solve of the normal equations; `∫g″²` by two-point Gauss quadrature on each knot interval
+/// (exact: `g″` is linear there).
+fn lsq_spline_values(knots: &[f64], t: &[f64], y: &[f64], w: &[f64], lambda: f64) -> Vec<f64> {
+    let (t0, span) = (knots[0], knots[knots.len() - 1] - knots[0]);
+    let inner: Vec<f64> = knots[1..knots.len() - 1].iter().map(|k| (k - t0) / span).collect();
+    let m = 4 + inner.len();
+    let basis = |s: f64| -> (Vec<f64>, Vec<f64>) {
+        let u = (s - t0) / span;
+        let mut b = vec![1.0, u, u * u, u * u * u];
+        // Second derivatives in the time t.
+        let mut b2 = vec![0.0, 0.0, 2.0, 6.0 * u];
+        for &k in &inner {
+            let p = (u - k).max(0.0);
+            b.push(p * p * p);
+            b2.push(6.0 * p);
+        }
+        (b, b2.into_iter().map(|x| x / (span * span)).collect())
+    };
+    let mut a = vec![0.0; m * m];
+    let mut rhs = vec![0.0; m];
+    for i in 0..t.len() {
+        let (b, _) = basis(t[i]);
+        for r in 0..m {
+            rhs[r] += w[i] * b[r] * y[i];
+            for c in 0..m {
+                a[r * m + c] += w[i] * b[r] * b[c];
+            }
+        }
+    }
+    let g = 0.5 / 3f64.sqrt();
+    for k in knots.windows(2) {
+        let h = k[1] - k[0];
+        for s in [0.5 - g, 0.5 + g] {
+            let (_, b2) = basis(k[0] + s * h);
+            for r in 0..m {
+                for c in 0..m {
+                    a[r * m + c] += lambda * 0.5 * h * b2[r] * b2[c];
+                }
+            }
+        }
+    }
+    let beta = dense_solve(a, rhs, m);
+    t.iter()
+        .map(|&s| basis(s).0.iter().zip(&beta).map(|(b, x)| b * x).sum())
+        .collect()
+}
+
+#[test]
+fn fewer_keys_than_samples_is_the_least_squares_cubic_spline_with_free_ends() {
+    let (t, theta, pts, w) = great_circle(40, 5);
+    for (keys, lam) in [(6, 0.0), (9, 0.0), (9, 0.05), (15, 1.0)] {
+        let options = FitOptions {
+            smoothing: Some(Smoothing::Lambda(lam)),
+            weights: Some(w.clone()),
+            keys: FitKeys::Count(keys),
+        };
+        let (curve, report) =
+            CubicSpline::try_fit(pts.clone(), t.clone(), &options, false).unwrap();
+        assert_eq!(report.keys, keys);
+        assert!(matches!(curve.end(), CubicEnd::Clamped { .. }));
+        let expect = lsq_spline_values(&report.key_times, &t, &theta, &w, lam);
+        let mut worst: f64 = 0.0;
+        for (i, &s) in t.iter().enumerate() {
+            let a = angle_on_circle(curve.eval(s).as_dvec3(), expect[i]);
+            worst = worst.max((a - expect[i]).abs());
+        }
+        assert!(worst < 1e-8, "{keys} keys, λ {lam}: {worst:e}");
+    }
+    // A key at every sample: the smoothing spline, natural ends.
+    let options = FitOptions {
+        keys: FitKeys::Count(40),
+        ..lambda(0.05)
+    };
+    let (curve, _) = CubicSpline::try_fit(pts, t, &options, false).unwrap();
+    assert!(matches!(curve.end(), CubicEnd::Natural));
+}
