@@ -165,9 +165,9 @@ impl<P: Manifold> CubicSpline<P> {
         options: &FitOptions,
         closed: bool,
     ) -> Result<(Self, FitReport), SplineError> {
-        let (points, knots, end, report) = fit_points(samples, times, options, closed, None)?;
-        let curve = Self::try_new(points, Some(knots), end, closed)?;
-        Ok((curve, report))
+        let fit = fit_points(samples, times, options, closed, None)?;
+        let curve = Self::try_new(fit.points, Some(fit.knots), fit.end, closed)?;
+        Ok((curve, fit.report))
     }
 }
 
@@ -219,26 +219,33 @@ impl CubicSpline<UnitQuat> {
         let mut report = None;
         let curve = RotationLoop::try_new(shortest, Some(times), |keys, knots| {
             let half = (keys.len() == 2 * n).then_some(n);
-            let (points, knots, end, r) =
-                fit_points(keys, knots.unwrap_or_default(), options, true, half)?;
-            report = Some(r);
-            Self::try_new(points, Some(knots), end, true)
+            let fit = fit_points(keys, knots.unwrap_or_default(), options, true, half)?;
+            report = Some(fit.report);
+            Self::try_new(fit.points, Some(fit.knots), fit.end, true)
         })?;
         let report = report.ok_or(SplineError::TooFewPoints { min: 3, got: n })?;
         Ok((curve, report))
     }
 }
 
-/// The fit of `samples` (with the `compact` feature on S^m): the fitted keys, their times
-/// (closed: and the return time), the end condition and the report. `half`: the samples are a
-/// doubled antiperiodic loop of `half` samples given.
+/// A fitted curve's parts: its keys, their times (closed: and the return time), its end
+/// condition, and the report.
+struct FitParts<P: Manifold> {
+    points: Vec<P>,
+    knots: Vec<f64>,
+    end: CubicEnd<P::Vector>,
+    report: FitReport,
+}
+
+/// The fit of `samples` (with the `compact` feature on S^m). `half`: the samples are a doubled
+/// antiperiodic loop of `half` samples given.
 fn fit_points<P: Manifold>(
     samples: Vec<P>,
     times: Vec<f64>,
     options: &FitOptions,
     closed: bool,
     half: Option<usize>,
-) -> Result<(Vec<P>, Vec<f64>, CubicEnd<P::Vector>, FitReport), SplineError> {
+) -> Result<FitParts<P>, SplineError> {
     let vectors: Vec<P::Vector> = samples.iter().map(Manifold::to_vector).collect();
     #[cfg(feature = "compact")]
     let (keys, knots, ends, report) = {
@@ -265,7 +272,12 @@ fn fit_points<P: Manifold>(
         },
         None => CubicEnd::Natural,
     };
-    Ok((points, knots, end, report))
+    Ok(FitParts {
+        points,
+        knots,
+        end,
+        report,
+    })
 }
 
 /// Fitted keys, their times (closed: and the return time), the fitted end velocities (open,
@@ -478,9 +490,10 @@ impl<Q: Manifold> Samples<Q> {
             .map(Manifold::to_vector)
             .collect();
         let velocities = solved.curve.key_velocities();
-        let ends = self
-            .free_ends(idx)
-            .then(|| (velocities[0].clone(), velocities[velocities.len() - 1].clone()));
+        let ends = match (self.free_ends(idx), velocities.first(), velocities.last()) {
+            (true, Some(start), Some(end)) => Some((start.clone(), end.clone())),
+            _ => None,
+        };
         Ok(Fitted {
             keys,
             ends,

@@ -777,7 +777,10 @@ fn a_full_turn_orbit_is_fitted_as_a_loop_in_so3() {
 /// (exact: `g″` is linear there).
 fn lsq_spline_values(knots: &[f64], t: &[f64], y: &[f64], w: &[f64], lambda: f64) -> Vec<f64> {
     let (t0, span) = (knots[0], knots[knots.len() - 1] - knots[0]);
-    let inner: Vec<f64> = knots[1..knots.len() - 1].iter().map(|k| (k - t0) / span).collect();
+    let inner: Vec<f64> = knots[1..knots.len() - 1]
+        .iter()
+        .map(|k| (k - t0) / span)
+        .collect();
     let m = 4 + inner.len();
     let basis = |s: f64| -> (Vec<f64>, Vec<f64>) {
         let u = (s - t0) / span;
