@@ -538,7 +538,7 @@ impl PyCurve {
     /// `residuals` (each sample's distance to the curve, an array).
     #[getter]
     fn fit_info<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        let residuals = with_built!(self, |b| b.fit.as_ref().map(|f| f.residuals.clone()));
+        let residuals = with_built!(self, |b| b.fit.as_ref().map(|f| f.report.residuals.clone()));
         let (Some(report), Some(residuals)) = (self.built.fit_report(), residuals) else {
             return Ok(None);
         };

@@ -912,7 +912,7 @@ fn residual_series<P: Manifold>(b: &Built<P>, color: Rgb, normalized: bool) -> V
     let stems = fit
         .times
         .iter()
-        .zip(&fit.residuals)
+        .zip(&fit.report.residuals)
         .map(|(&t, &r)| vec![(unit(t), 0.0), (unit(t), r.to_degrees())])
         .collect();
     let rms = fit.report.rms.to_degrees();

@@ -72,16 +72,15 @@ pub struct FitRecord<P> {
     pub times: Vec<f64>,
     /// The fitted keys, at [`FitReport::key_times`] (closed: without the return).
     pub keys: Vec<P>,
-    /// Each sample's distance to the curve at its time, radians: the great-circle angle, on S³
-    /// the rotation angle between the sample and the curve's orientation.
-    pub residuals: Vec<f64>,
-    /// The core's report: λ, RMS and largest residual, key count and times, iterations, EDF.
+    /// The core's report: λ, RMS and largest residual, key count and times, iterations, EDF,
+    /// and each sample's residual (its distance to the curve at its time, radians: the
+    /// great-circle angle, on S³ the rotation angle).
     pub report: FitReport,
 }
 
 /// The report as `info.fit`: `lambda`, `rms`, `max`, `keys`, `key_times`, `iterations`, `edf`
 /// when the fit has one, and `residuals`, one per sample.
-fn fit_json(report: &FitReport, residuals: &[f64]) -> Value {
+fn fit_json(report: &FitReport) -> Value {
     let mut out = Map::new();
     out.insert("lambda".into(), json!(report.lambda));
     out.insert("rms".into(), json!(report.rms));
@@ -92,7 +91,7 @@ fn fit_json(report: &FitReport, residuals: &[f64]) -> Value {
     if let Some(edf) = report.edf {
         out.insert("edf".into(), json!(edf));
     }
-    out.insert("residuals".into(), json!(residuals));
+    out.insert("residuals".into(), json!(report.residuals));
     Value::Object(out)
 }
 
@@ -282,13 +281,11 @@ fn fitted<P: ScenePoint>(
     let (curve, report) =
         CubicSpline::try_fit(samples.clone(), times.clone(), options, closed).map_err(fit_error)?;
     let keys = curve.points().to_vec();
-    let residuals = report.residuals.clone();
-    let info = fit_json(&report, &residuals);
+    let info = fit_json(&report);
     let mut built = cubic::finish(curve, samples, 2).with_info("fit", info);
     built.fit = Some(FitRecord {
         times,
         keys,
-        residuals,
         report,
     });
     Ok(built)
@@ -307,7 +304,7 @@ fn fitted_loop(
         .iter()
         .map(|&t| spherekit::Curve::eval(&curve, t))
         .collect();
-    let info = fit_json(&report, &report.residuals);
+    let info = fit_json(&report);
     let mut built = Built::new(curve, samples)
         .with_info("knots", json!(report.key_times))
         .with_info("fit", info)
@@ -315,7 +312,6 @@ fn fitted_loop(
     built.fit = Some(FitRecord {
         times,
         keys,
-        residuals: report.residuals.clone(),
         report,
     });
     Ok(built)

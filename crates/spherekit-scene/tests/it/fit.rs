@@ -42,17 +42,17 @@ fn a_fit_keeps_its_samples_times_residuals_and_report() {
     assert_eq!(b.inputs.len(), 30, "the samples are the inputs");
     assert_eq!(fit.times, times);
     assert_eq!(fit.keys.len(), 30);
-    assert_eq!(fit.residuals.len(), 30);
+    assert_eq!(fit.report.residuals.len(), 30);
     let report = &fit.report;
     assert!(report.lambda > 0.0 && report.edf.is_some());
     // The residuals are the report's: its RMS (unit weights) and its largest.
-    let rms = (fit.residuals.iter().map(|d| d * d).sum::<f64>() / 30.0).sqrt();
+    let rms = (fit.report.residuals.iter().map(|d| d * d).sum::<f64>() / 30.0).sqrt();
     assert!(
         (rms - report.rms).abs() < 1e-12 * report.rms.max(1.0),
         "{rms} {}",
         report.rms
     );
-    let max = fit.residuals.iter().copied().fold(0.0, f64::max);
+    let max = fit.report.residuals.iter().copied().fold(0.0, f64::max);
     assert!((max - report.max).abs() < 1e-12, "{max} {}", report.max);
     // The same numbers in info.fit (what `spherekit sample` prints).
     let scene = Scene::from_value(&scene).unwrap();
@@ -63,7 +63,7 @@ fn a_fit_keeps_its_samples_times_residuals_and_report() {
     assert_eq!(info["keys"], json!(30));
     assert_eq!(info["key_times"], json!(report.key_times));
     assert_eq!(info["edf"], json!(report.edf.unwrap()));
-    assert_eq!(info["residuals"], json!(fit.residuals));
+    assert_eq!(info["residuals"], json!(fit.report.residuals));
     assert_eq!(curves[0].fit_report(), Some(report));
 }
 
@@ -148,7 +148,7 @@ fn sign_flips_of_rotation_samples_change_nothing() {
             );
         }
         let fit = y.fit.as_ref().unwrap();
-        let rms = (fit.residuals.iter().map(|d| d * d).sum::<f64>() / 20.0).sqrt();
+        let rms = (fit.report.residuals.iter().map(|d| d * d).sum::<f64>() / 20.0).sqrt();
         assert!(
             (rms - b.rms).abs() < 1e-12,
             "rotation-angle residuals: {rms} {}",
