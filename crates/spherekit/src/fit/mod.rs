@@ -458,8 +458,9 @@ impl<Q: Manifold> Samples<Q> {
     }
 
     /// The fit on the keys `idx` with the given smoothing, its report and the per-sample
-    /// distances, from starting keys `start`
-    /// (default: the samples at the keys).
+    /// distances, from starting keys `start` (default: the samples at the keys). With free end
+    /// velocities where [`free_ends`](Self::free_ends) allows them; natural ends when that fit
+    /// fails (a cubic segment cannot follow the samples: keys too far apart).
     pub(crate) fn fitted(
         &self,
         idx: &[usize],
@@ -467,13 +468,25 @@ impl<Q: Manifold> Samples<Q> {
         start: Option<Vec<Q::Vector>>,
     ) -> Result<Fitted<Q::Vector>, SplineError> {
         let start = start.unwrap_or_else(|| idx.iter().map(|&i| self.points[i].clone()).collect());
+        if self.free_ends(idx) {
+            if let Ok(f) = self.fitted_with(idx, smoothing, Start::Keys(start.clone(), true)) {
+                return Ok(f);
+            }
+        }
+        self.fitted_with(idx, smoothing, Start::Keys(start, false))
+    }
+
+    /// [`fitted`](Self::fitted) from `start`.
+    fn fitted_with(
+        &self,
+        idx: &[usize],
+        smoothing: &Smoothing,
+        start: Start<Q>,
+    ) -> Result<Fitted<Q::Vector>, SplineError> {
         let all = idx.len() == self.points.len();
         let mut iterations = 0;
         let (lambda, solved) = match *smoothing {
-            Smoothing::Lambda(l) => {
-                let s = self.solve(l, idx, Start::Keys(start), Until::Converged)?;
-                (l, s)
-            }
+            Smoothing::Lambda(l) => (l, self.solve(l, idx, start, Until::Converged)?),
             Smoothing::Gcv => self.gcv(idx, start, &mut iterations)?,
             Smoothing::Rms(sigma) => self.rms_target(idx, start, sigma, &mut iterations)?,
         };
@@ -490,7 +503,8 @@ impl<Q: Manifold> Samples<Q> {
             .map(Manifold::to_vector)
             .collect();
         let velocities = solved.curve.key_velocities();
-        let ends = match (self.free_ends(idx), velocities.first(), velocities.last()) {
+        let free = matches!(solved.curve.end(), CubicEnd::Clamped { .. });
+        let ends = match (free, velocities.first(), velocities.last()) {
             (true, Some(start), Some(end)) => Some((start.clone(), end.clone())),
             _ => None,
         };
@@ -521,7 +535,7 @@ impl<Q: Manifold> Samples<Q> {
         warm: &mut Start<Q>,
         iterations: &mut usize,
     ) -> Result<f64, SplineError> {
-        let start = core::mem::replace(warm, Start::Keys(Vec::new()));
+        let start = core::mem::replace(warm, Start::Keys(Vec::new(), false));
         let s = self.solve(lambda, idx, start, Until::Steps(1))?;
         *iterations += s.iterations;
         let rss = s.rss;
@@ -533,14 +547,14 @@ impl<Q: Manifold> Samples<Q> {
     fn gcv(
         &self,
         idx: &[usize],
-        start: Vec<Q::Vector>,
+        start: Start<Q>,
         iterations: &mut usize,
     ) -> Result<(f64, Solved<Q>), SplineError> {
         let n = self.given() as f64;
         // A doubled loop's residual is twice the samples'.
         let share = n / self.points.len() as f64;
         let (lo, hi) = self.lambda_range();
-        let mut warm = Start::Keys(start);
+        let mut warm = start;
         let mut score = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
             let lambda = u.exp();
             let rss = share * self.trial(lambda, idx, warm, iterations)?;
@@ -591,7 +605,7 @@ impl<Q: Manifold> Samples<Q> {
     fn rms_target(
         &self,
         idx: &[usize],
-        start: Vec<Q::Vector>,
+        start: Start<Q>,
         sigma: f64,
         iterations: &mut usize,
     ) -> Result<(f64, Solved<Q>), SplineError> {
@@ -602,7 +616,7 @@ impl<Q: Manifold> Samples<Q> {
             lo - 4.0 * core::f64::consts::LN_10,
             hi + 8.0 * core::f64::consts::LN_10,
         );
-        let mut warm = Start::Keys(start);
+        let mut warm = start;
         let mut rms_at = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
             Ok((self.trial(u.exp(), idx, warm, iterations)? / total).sqrt())
         };

@@ -852,3 +852,48 @@ fn fewer_keys_than_samples_is_the_least_squares_cubic_spline_with_free_ends() {
     let (curve, _) = CubicSpline::try_fit(pts, t, &options, false).unwrap();
     assert!(matches!(curve.end(), CubicEnd::Natural));
 }
+
+#[test]
+fn every_key_count_of_a_few_samples_fits() {
+    // Keys from two to every sample, with end segments with and without samples between their
+    // keys (free end velocities only with), λ = 0 (least squares, interpolation at every sample)
+    // and λ > 0, on S² and on noisy rotations.
+    for n in [3_usize, 4, 5, 6, 8, 13] {
+        let t: Vec<f64> = (0..n)
+            .map(|i| 0.2 * i as f64 + 0.01 * ((i * 7) % 3) as f64)
+            .collect();
+        let s2: Vec<S2Point> = t
+            .iter()
+            .map(|&x| {
+                S2Point::try_new(DVec3::new(x.cos(), x.sin(), 0.3 * (2.0 * x).sin())).unwrap()
+            })
+            .collect();
+        let s3: Vec<UnitQuat> = t
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| {
+                let wobble = DVec3::new(0.01 * noise(i, 9), 0.0, 0.005);
+                UnitQuat::from_rotation_vector(DVec3::new(x, 0.2 * x * x, 0.1)).unwrap()
+                    * UnitQuat::from_rotation_vector(wobble).unwrap()
+            })
+            .collect();
+        for m in 2..=n {
+            for lam in [0.0, 1e-3] {
+                let options = FitOptions {
+                    keys: FitKeys::Count(m),
+                    ..lambda(lam)
+                };
+                let (c2, r2) = CubicSpline::try_fit(s2.clone(), t.clone(), &options, false)
+                    .unwrap_or_else(|e| panic!("S² {n} samples, {m} keys, λ {lam}: {e}"));
+                let (c3, r3) = CubicSpline::try_fit(s3.clone(), t.clone(), &options, false)
+                    .unwrap_or_else(|e| panic!("S³ {n} samples, {m} keys, λ {lam}: {e}"));
+                assert!(r2.max.is_finite() && r3.max.is_finite());
+                assert!(c2.eval(t[n / 2]).as_dvec3().is_finite());
+                assert!(c3.eval(t[n / 2]).to_vector().is_finite());
+                if lam == 0.0 && m == n {
+                    assert!(r2.max < 1e-9 && r3.max < 1e-9, "{n}: {} {}", r2.max, r3.max);
+                }
+            }
+        }
+    }
+}
