@@ -538,8 +538,9 @@ impl ScenePoint for SmPoint {
 /// on S² or S³. Every [`Manifold`] operation is a default method over [`Ambient`], whose
 /// implementations do the same arithmetic coordinate by coordinate for `DVec3`, `DVec4` and
 /// [`VecN`] (the core's `recast.rs`), so the curve and its samples have the same bits as
-/// without the feature: `just unit` renders the golden images with it and without it. The cost
-/// is in evaluation, a point of S^m allocates its coordinates: the browser build turns the
+/// without the feature (`tests::curves_on_s_m_have_the_same_bits`; `just unit` also renders the
+/// golden images with it and without it). The fit of rotations is not written for every sphere
+/// (its distances are rotation angles) and stays on [`UnitQuat`]. The cost is in evaluation, a point of S^m allocates its coordinates: the browser build turns the
 /// feature on for its size (BENCHMARKS.md section 6 has the frame times), the CLI and Python
 /// leave it off.
 #[cfg(feature = "compact")]
