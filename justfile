@@ -42,10 +42,10 @@ corpus:
     cargo run --quiet --locked -p spherekit-cli -- methods --json > target/registry.json
     python3 scripts/robustness_corpus.py --registry target/registry.json
 
-# Unit, integration, property and CLI tests, and doctests. `--all-features` includes the core's
-# `compact` (the browser build's constructions, once on S^m), so everything runs the shipped wasm
-# path natively; then the golden images again without it, the constructions of the CLI and Python
-# (`core-features` runs the core's own tests without it)
+# Unit, integration, property and CLI tests, and doctests. `--all-features` includes the core's and
+# the scene's `compact` (the browser build's constructions and every-sphere methods, once on S^m),
+# so everything runs the shipped wasm path natively; then the golden images again without them,
+# the path of the CLI and Python (`core-features` runs the core's own tests without it)
 unit:
     cargo test --workspace --all-features --locked
     cargo test -p spherekit-cli --locked --test it golden::
@@ -141,8 +141,9 @@ fuzz seconds="600" target="all":
 # (the workspace Cargo.toml: the release profile at opt-level "z" with LTO, one codegen unit,
 # panics abort, no debug info; the renderer at opt-level 3 for frame time) on the stable
 # toolchain, and runs the pinned wasm-bindgen CLI (`--target web`, with TypeScript
-# declarations); `--mode no-install --no-opt`: wasm-pack downloads nothing, and `wasm-opt -Oz`
-# runs here for size. scripts/npm_package.mjs adds the docs widget (crates/spherekit-wasm/js),
+# declarations); `--mode no-install --no-opt`: wasm-pack downloads nothing, and wasm-opt runs
+# here for size, -Oz twice (the second pass finds more to remove after the first; BENCHMARKS.md
+# section 6). scripts/npm_package.mjs adds the docs widget (crates/spherekit-wasm/js),
 # the licences, the file list and the `exports` map to package.json; the project's pages load
 # this package. Then web/pkg/presets.json, the playground's example menu (not in the package),
 # from the golden scenes (scripts/web_presets.py). The budget is the gzipped size of the .wasm,
@@ -150,7 +151,7 @@ fuzz seconds="600" target="all":
 web:
     bash scripts/setup-web.sh wasm-pack --quiet build crates/spherekit-wasm --target web --profile web --mode no-install --no-opt \
         --out-dir "$PWD/web/pkg" --out-name spherekit_wasm --no-gitignore -- --locked
-    bash scripts/setup-web.sh wasm-opt web/pkg/spherekit_wasm_bg.wasm -o web/pkg/spherekit_wasm_bg.wasm -Oz --strip-debug --strip-producers \
+    bash scripts/setup-web.sh wasm-opt web/pkg/spherekit_wasm_bg.wasm -o web/pkg/spherekit_wasm_bg.wasm -Oz -Oz --strip-debug --strip-producers \
         --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue
     node scripts/npm_package.mjs web/pkg
     python3 scripts/web_presets.py

@@ -393,7 +393,7 @@ pub(crate) fn draw_marker(
                 .map(|k| {
                     #[expect(clippy::cast_precision_loss, reason = "a small index")]
                     let a = k as f32 * core::f32::consts::TAU / 32.0;
-                    at(h * a.cos(), h * a.sin())
+                    at(h * libm::cosf(a), h * libm::sinf(a))
                 })
                 .collect()
         };

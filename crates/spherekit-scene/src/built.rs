@@ -266,10 +266,36 @@ pub enum BuiltCurve {
 
 /// Builds the same expression on every sphere: `on_every_sphere!(points, |p| expr)` matches
 /// [`Points`](crate::scene::Points) and wraps `expr` (a [`Built`]) in the [`BuiltCurve`] of
-/// the same sphere, so a method's build function is written once for S², S³ and S^m. (The
-/// core's `compact` feature, which the browser build turns on, is what keeps one copy of the
-/// constructions that do the same arithmetic on every sphere.)
+/// the same sphere, so a method's build function is written once for S², S³ and S^m. Without
+/// the `compact` feature `expr` is compiled for each sphere (`on_each_sphere!`); with it (the
+/// browser build, for size) once, on S^m (`on_s_m!`; the unit tests have both,
+/// `on_sm::ROUTE` choosing, for `on_sm::tests` to compare them).
+#[cfg(not(feature = "compact"))]
 macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        $crate::built::on_each_sphere!($points, |$p| $body)
+    };
+}
+#[cfg(all(feature = "compact", not(test)))]
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        $crate::built::on_s_m!($points, |$p| $body)
+    };
+}
+#[cfg(all(feature = "compact", test))]
+macro_rules! on_every_sphere {
+    ($points:expr, |$p:ident| $body:expr) => {
+        if $crate::built::on_sm::ROUTE.get() {
+            $crate::built::on_s_m!($points, |$p| $body)
+        } else {
+            $crate::built::on_each_sphere!($points, |$p| $body)
+        }
+    };
+}
+
+/// `on_every_sphere!` with `expr` compiled for each sphere.
+#[cfg(any(not(feature = "compact"), test))]
+macro_rules! on_each_sphere {
     ($points:expr, |$p:ident| $body:expr) => {
         match $points {
             $crate::scene::Points::S2($p) => $crate::built::BuiltCurve::S2($body),
@@ -278,7 +304,22 @@ macro_rules! on_every_sphere {
         }
     };
 }
+#[cfg(any(not(feature = "compact"), test))]
+pub(crate) use on_each_sphere;
+
+/// `on_every_sphere!` with `expr` compiled once, on S^m: the keys of an S² or S³ scene become
+/// points of S^m, and the built curve is wrapped back onto their sphere ([`on_sm`]).
+#[cfg(feature = "compact")]
+macro_rules! on_s_m {
+    ($points:expr, |$p:ident| $body:expr) => {{
+        let ($p, back) = $crate::built::on_sm::to_sm($points);
+        let built: $crate::built::Built<spherekit::SmPoint> = $body;
+        back.wrap(built)
+    }};
+}
 pub(crate) use on_every_sphere;
+#[cfg(feature = "compact")]
+pub(crate) use on_s_m;
 
 /// The fields [`BuiltCurve::sample_field`] gives, as [`Scene::sample_json`] names them.
 pub const SAMPLE_FIELDS: [&str; 9] = [
@@ -484,5 +525,224 @@ impl ScenePoint for SmPoint {
     }
     fn into_built_curve(built: Built<Self>) -> BuiltCurve {
         BuiltCurve::Sm(built)
+    }
+}
+
+/// The `compact` feature: the every-sphere methods built and evaluated once, on S^m.
+///
+/// A method written with [`on_every_sphere!`] would otherwise be compiled three times (for
+/// [`S2Point`], [`UnitQuat`] and [`SmPoint`]), its construction and its evaluation; the core's
+/// own `compact` feature (which this one turns on) compiles only the constructions once. Here
+/// the keys of an S² or S³ scene become points of S^m with the same ambient coordinates, the
+/// method builds there, and [`OnSm`] wraps the curve so that the rest of the code sees a curve
+/// on S² or S³. Every [`Manifold`] operation is a default method over [`Ambient`], whose
+/// implementations do the same arithmetic coordinate by coordinate for `DVec3`, `DVec4` and
+/// [`VecN`] (the core's `recast.rs`), so the curve and its samples have the same bits as
+/// without the feature (`tests::curves_on_s_m_have_the_same_bits`; `just unit` also renders the
+/// golden images with it and without it). The fit of rotations is not written for every sphere
+/// (its distances are rotation angles) and stays on [`UnitQuat`]. The cost is in evaluation, a point of S^m allocates its coordinates: the browser build turns the
+/// feature on for its size (BENCHMARKS.md section 6 has the frame times), the CLI and Python
+/// leave it off.
+#[cfg(feature = "compact")]
+pub(crate) mod on_sm {
+    use spherekit::glam::{DVec3, DVec4};
+    use spherekit::{Ambient, Curve, Jet, Manifold, Side, SmPoint, VecN};
+
+    use super::{Built, BuiltCurve, ScenePoint};
+    use crate::fit::FitRecord;
+    use crate::scene::Points;
+
+    /// The sphere a curve built on S^m goes back to.
+    pub(crate) enum Back {
+        S2,
+        S3,
+        Sm,
+    }
+
+    /// A point of S^m with the ambient coordinates of `p`.
+    fn point<P: Manifold>(p: &P) -> SmPoint {
+        SmPoint::from_vector_unchecked(VecN::new(p.to_vector().as_slice().to_vec()))
+    }
+
+    /// The scene's points as points of S^m, and the sphere to go back to.
+    pub(crate) fn to_sm(points: Points) -> (Vec<SmPoint>, Back) {
+        match points {
+            Points::S2(p) => (p.iter().map(point).collect(), Back::S2),
+            Points::S3(p) => (p.iter().map(point).collect(), Back::S3),
+            Points::Sm(p) => (p, Back::Sm),
+        }
+    }
+
+    impl Back {
+        /// `built` on the sphere of the scene.
+        pub(crate) fn wrap(self, built: Built<SmPoint>) -> BuiltCurve {
+            match self {
+                Self::S2 => BuiltCurve::S2(recast(built, DVec3::ZERO)),
+                Self::S3 => BuiltCurve::S3(recast(built, DVec4::ZERO)),
+                Self::Sm => BuiltCurve::Sm(built),
+            }
+        }
+    }
+
+    /// `built` as a curve of the point type whose ambient vectors are like `like`.
+    fn recast<Q: ScenePoint>(built: Built<SmPoint>, like: Q::Vector) -> Built<Q> {
+        let to = OnSm::<Q> {
+            curve: built.curve,
+            like,
+        };
+        let points = |ps: &[SmPoint]| ps.iter().map(|p| to.point(p)).collect();
+        Built {
+            inputs: points(&built.inputs),
+            controls: points(&built.controls),
+            auxiliary: points(&built.auxiliary),
+            info: built.info,
+            order: built.order,
+            fit: built.fit.map(|f| FitRecord {
+                keys: points(&f.keys),
+                times: f.times,
+                residuals: f.residuals,
+                report: f.report,
+            }),
+            curve: Box::new(to),
+        }
+    }
+
+    /// A curve on S^m seen as a curve of `Q` (S² or S³), its points and vectors converted
+    /// coordinate by coordinate (every method of [`Curve`] forwarded, so that none falls back
+    /// to a default the inner curve overrides).
+    #[derive(Debug)]
+    pub(crate) struct OnSm<Q: Manifold> {
+        curve: Box<dyn Curve<Point = SmPoint> + Send + Sync>,
+        like: Q::Vector,
+    }
+
+    impl<Q: Manifold> OnSm<Q> {
+        fn vector(&self, v: &VecN) -> Q::Vector {
+            self.like.with_coords(v.as_slice())
+        }
+
+        fn point(&self, p: &SmPoint) -> Q {
+            Q::from_vector_unchecked(self.like.with_coords(p.coords()))
+        }
+
+        fn jet(&self, j: &Jet<SmPoint>) -> Jet<Q> {
+            Jet {
+                point: self.point(&j.point),
+                velocity: self.vector(&j.velocity),
+                acceleration: self.vector(&j.acceleration),
+            }
+        }
+    }
+
+    impl<Q: Manifold> Curve for OnSm<Q> {
+        type Point = Q;
+
+        fn domain(&self) -> [f64; 2] {
+            self.curve.domain()
+        }
+
+        fn joints(&self) -> &[f64] {
+            self.curve.joints()
+        }
+
+        fn is_closed(&self) -> bool {
+            self.curve.is_closed()
+        }
+
+        fn is_antiperiodic(&self) -> bool {
+            self.curve.is_antiperiodic()
+        }
+
+        fn jet_at(&self, t: f64, side: Side) -> Jet<Q> {
+            self.jet(&self.curve.jet_at(t, side))
+        }
+
+        fn jet(&self, t: f64) -> Jet<Q> {
+            self.jet(&self.curve.jet(t))
+        }
+
+        fn eval(&self, t: f64) -> Q {
+            self.point(&self.curve.eval(t))
+        }
+
+        fn jet_beyond(&self, t: f64) -> Option<Jet<Q>> {
+            self.curve.jet_beyond(t).map(|j| self.jet(&j))
+        }
+
+        fn eval_many(&self, ts: &[f64], out: &mut [Q]) {
+            let mut ps = vec![self.curve.eval(self.curve.domain()[0]); out.len()];
+            self.curve.eval_many(ts, &mut ps);
+            for (o, p) in out.iter_mut().zip(&ps) {
+                *o = self.point(p);
+            }
+        }
+
+        fn jet_many(&self, ts: &[f64], out: &mut [Jet<Q>]) {
+            let mut js = vec![self.curve.jet(self.curve.domain()[0]); out.len()];
+            self.curve.jet_many(ts, &mut js);
+            for (o, j) in out.iter_mut().zip(&js) {
+                *o = self.jet(j);
+            }
+        }
+    }
+
+    #[cfg(test)]
+    std::thread_local! {
+        /// Whether the unit tests' `on_every_sphere!` builds on S^m, as the feature's builds
+        /// outside the unit tests do.
+        pub(crate) static ROUTE: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
+    }
+
+    #[cfg(test)]
+    mod tests {
+        use std::path::Path;
+
+        use super::ROUTE;
+        use crate::scene::{SampleOptions, Scene};
+
+        /// Every golden scene (every method, S² and S³, open and closed, with parameters, fits)
+        /// and every scene of the degenerate-input corpus (near and exactly coincident keys,
+        /// near half turns, parameters at and outside the domain under every extrapolation
+        /// policy), sampled with derivatives and the continuity report: the same JSON (`f64`s
+        /// printed in the shortest form that reads back to the same bits), or the same error,
+        /// built on each sphere and on S^m.
+        #[test]
+        fn curves_on_s_m_have_the_same_bits() {
+            let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests");
+            let (mut compared, mut differ) = (0, Vec::new());
+            let dirs = [root.join("golden"), root.join("robustness/degenerate")];
+            let paths = dirs
+                .iter()
+                .flat_map(|d| std::fs::read_dir(d).expect("scenes"));
+            for entry in paths {
+                let path = entry.expect("entry").path();
+                if path.extension().is_none_or(|e| e != "json") {
+                    continue;
+                }
+                let text = std::fs::read_to_string(&path).expect("scene");
+                let Ok(scene) = Scene::from_json(&text) else {
+                    continue;
+                };
+                let options = SampleOptions {
+                    deriv: true,
+                    continuity: true,
+                    body_frame: false,
+                };
+                let sample = |on_sm: bool| {
+                    ROUTE.set(on_sm);
+                    let curves = scene.build();
+                    ROUTE.set(true);
+                    curves
+                        .map(|c| scene.sample_json_with(&c, options).to_string())
+                        .map_err(|e| e.to_string())
+                };
+                if sample(false) != sample(true) {
+                    differ.push(path.display().to_string());
+                }
+                compared += 1;
+            }
+            assert!(differ.is_empty(), "{differ:#?}");
+            assert!(compared >= 400, "{compared} scenes");
+        }
     }
 }

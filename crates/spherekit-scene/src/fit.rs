@@ -246,10 +246,14 @@ pub(crate) fn build(
             if spec.canonicalize {
                 spherekit::unflip(&mut samples);
             }
-            if spec.closed {
-                return fitted_loop(samples, times, options).map(BuiltCurve::S3);
+            // Rotation samples: `q` and `−q` are one sample, distances are rotation angles
+            // (not the fit of S^m, so not through `on_every_sphere!`).
+            return if spec.closed {
+                fitted_loop(samples, times, options)
+            } else {
+                fitted(samples, times, options, false)
             }
-            Points::S3(samples)
+            .map(BuiltCurve::S3);
         }
         Space::Sm(_) => Points::Sm(points(&spec.points)?),
     };

@@ -25,6 +25,18 @@ mod backend {
     pub(crate) fn atan2(y: f64, x: f64) -> f64 {
         libm::atan2(y, x)
     }
+    #[inline]
+    pub(crate) fn exp(x: f64) -> f64 {
+        libm::exp(x)
+    }
+    #[inline]
+    pub(crate) fn ln(x: f64) -> f64 {
+        libm::log(x)
+    }
+    #[inline]
+    pub(crate) fn powf(x: f64, y: f64) -> f64 {
+        libm::pow(x, y)
+    }
 }
 
 #[cfg(not(feature = "libm"))]
@@ -45,13 +57,25 @@ mod backend {
     pub(crate) fn atan2(y: f64, x: f64) -> f64 {
         y.atan2(x)
     }
+    #[inline]
+    pub(crate) fn exp(x: f64) -> f64 {
+        x.exp()
+    }
+    #[inline]
+    pub(crate) fn ln(x: f64) -> f64 {
+        x.ln()
+    }
+    #[inline]
+    pub(crate) fn powf(x: f64, y: f64) -> f64 {
+        x.powf(y)
+    }
 }
 
 #[allow(
     unused_imports,
     reason = "not every helper is used by every feature combination"
 )]
-pub(crate) use backend::{atan2, cos, sin, sin_cos};
+pub(crate) use backend::{atan2, cos, exp, ln, powf, sin, sin_cos};
 
 /// Below this angle the series branches of [`sinc`] and [`inv_sinc`] are used.
 const SERIES_THRESHOLD: f64 = 1e-4;

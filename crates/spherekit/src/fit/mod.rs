@@ -47,6 +47,7 @@ use crate::cubic::{CubicEnd, CubicSpline};
 use crate::error::{PointError, SplineError};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
+use crate::math;
 use crate::rotation_loop::RotationLoop;
 use crate::s3::UnitQuat;
 use solve::{Samples, Solved, Start, Until};
@@ -556,7 +557,7 @@ impl<Q: Manifold> Samples<Q> {
         let (lo, hi) = self.lambda_range();
         let mut warm = start;
         let mut score = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
-            let lambda = u.exp();
+            let lambda = math::exp(u);
             let rss = share * self.trial(lambda, idx, warm, iterations)?;
             let tr = self.trace(lambda);
             let denom = (n - tr).max(f64::MIN_POSITIVE);
@@ -596,7 +597,7 @@ impl<Q: Manifold> Samples<Q> {
         } else {
             (grid[j], Start::Fit(grid_fit))
         };
-        let lambda = u.exp();
+        let lambda = math::exp(u);
         let s = self.solve(lambda, idx, start, Until::Converged)?;
         Ok((lambda, s))
     }
@@ -618,7 +619,7 @@ impl<Q: Manifold> Samples<Q> {
         );
         let mut warm = start;
         let mut rms_at = |u: f64, warm: &mut Start<Q>| -> Result<f64, SplineError> {
-            Ok((self.trial(u.exp(), idx, warm, iterations)? / total).sqrt())
+            Ok((self.trial(math::exp(u), idx, warm, iterations)? / total).sqrt())
         };
         let ra = rms_at(a, &mut warm)?;
         let Start::Fit(low) = &warm else {
@@ -643,8 +644,11 @@ impl<Q: Manifold> Samples<Q> {
             ));
         }
         // Illinois on f(u) = ln rms(u) − ln σ, bracketed.
-        let target = sigma.ln();
-        let (mut fa, mut fb) = (ra.max(f64::MIN_POSITIVE).ln() - target, rb.ln() - target);
+        let target = math::ln(sigma);
+        let (mut fa, mut fb) = (
+            math::ln(ra.max(f64::MIN_POSITIVE)) - target,
+            math::ln(rb) - target,
+        );
         warm = low;
         let mut side = 0;
         for _ in 0..200 {
@@ -655,10 +659,10 @@ impl<Q: Manifold> Samples<Q> {
             };
             let u = if u > a && u < b { u } else { 0.5 * (a + b) };
             let r = rms_at(u, &mut warm)?;
-            let f = r.max(f64::MIN_POSITIVE).ln() - target;
+            let f = math::ln(r.max(f64::MIN_POSITIVE)) - target;
             if f.abs() <= 1e-10 || b - a <= 1e-13 * (1.0 + u.abs()) {
-                let s = self.solve(u.exp(), idx, warm, Until::Converged)?;
-                return Ok((u.exp(), s));
+                let s = self.solve(math::exp(u), idx, warm, Until::Converged)?;
+                return Ok((math::exp(u), s));
             }
             if f < 0.0 {
                 a = u;
@@ -689,12 +693,12 @@ impl<Q: Manifold> Samples<Q> {
     /// trace alone.
     fn lambda_range(&self) -> (f64, f64) {
         let n = self.given() as f64;
-        let tr = |u: f64| self.trace(u.exp());
+        let tr = |u: f64| self.trace(math::exp(u));
         // The natural scale: λ ~ w·h³ for a sample spacing h.
         let span = self.times[self.times.len() - 1] - self.times[0];
         let h = span / n;
         let wmean = self.weights.iter().sum::<f64>() / n;
-        let mut lo = (wmean * h * h * h).ln();
+        let mut lo = math::ln(wmean * h * h * h);
         while tr(lo) < n - 0.1 && lo > -700.0 {
             lo -= core::f64::consts::LN_10;
         }

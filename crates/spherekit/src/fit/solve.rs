@@ -29,6 +29,7 @@ use crate::banded::BlockTridiagonal;
 use crate::cubic::{CubicEnd, CubicSpline, Segment};
 use crate::error::{SolveError, SplineError};
 use crate::manifold::{Manifold, exp_vector, geodesic_frame_sin_cos, renormalize};
+use crate::math;
 
 /// Gauss–Newton steps at most.
 const MAX_ITERATIONS: usize = 100;
@@ -371,7 +372,7 @@ impl<P: Manifold> Samples<P> {
         let samples = range.len();
         let nres = samples * dim + 2 * d;
         let nout = nres + 2 * d;
-        let sqrt_lambda = lambda.sqrt() * self.scale * h.powf(-1.5);
+        let sqrt_lambda = lambda.sqrt() * self.scale * math::powf(h, -1.5);
         // Samples are aligned with the current curve once (the sign of a rotation sample stays
         // fixed through the differences).
         let base = Segment::hermite(&p[k], &p[k1], &v[k], &v[k1], h);
@@ -436,7 +437,7 @@ impl<P: Manifold> Samples<P> {
                 if is_velocity {
                     (pk.clone(), vk.clone() + frame[j].clone() * (sign * eps))
                 } else {
-                    let (s, c) = (sign * eps).sin_cos();
+                    let (s, c) = math::sin_cos(sign * eps);
                     let q = pk.clone() * c + frame[j].clone() * s;
                     // The velocity carried along: projected onto the new tangent space.
                     let w = vk.clone() - q.clone() * q.dot(vk);
