@@ -600,7 +600,6 @@ pub(crate) mod on_sm {
             fit: built.fit.map(|f| FitRecord {
                 keys: points(&f.keys),
                 times: f.times,
-                residuals: f.residuals,
                 report: f.report,
             }),
             curve: Box::new(to),
