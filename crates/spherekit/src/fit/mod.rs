@@ -469,10 +469,10 @@ impl<Q: Manifold> Samples<Q> {
         start: Option<Vec<Q::Vector>>,
     ) -> Result<Fitted<Q::Vector>, SplineError> {
         let start = start.unwrap_or_else(|| idx.iter().map(|&i| self.points[i].clone()).collect());
-        if self.free_ends(idx) {
-            if let Ok(f) = self.fitted_with(idx, smoothing, Start::Keys(start.clone(), true)) {
-                return Ok(f);
-            }
+        if self.free_ends(idx)
+            && let Ok(f) = self.fitted_with(idx, smoothing, Start::Keys(start.clone(), true))
+        {
+            return Ok(f);
         }
         self.fitted_with(idx, smoothing, Start::Keys(start, false))
     }
