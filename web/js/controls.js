@@ -41,8 +41,8 @@ export function curveControls(c, curve, space, method, edit) {
     else if (spec.type === 'bool') control = [boolControl(spec, value, edit)];
     else if (spec.type === 'vector') control = [vectorControl(spec, value, edit)];
     else control = numberControls(spec, value, n, closed, edit);
-    // A curve fitted to its points (the scene's `fit`) has natural ends, whatever its parameters say.
-    const why = curve.fit ? 'a fitted curve has natural ends' : off;
+    // A curve fitted to its points (the scene's `fit`) takes the ends the fit sets.
+    const why = curve.fit ? 'a fit sets its ends' : off;
     if (why) for (const el of control) disable(el, why);
     controls.push(...control);
   }
