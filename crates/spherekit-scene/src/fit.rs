@@ -3,8 +3,8 @@
 
 //! A curve's `"fit"`: the scene's `points` are measured samples at the times `knots`, and the
 //! curve is the cubic spline fitted to them ([`CubicSpline::try_fit`]: the smoothing spline, or
-//! a spline on fewer keys): closed, or open with natural ends (a key at every sample) or with
-//! fitted end velocities (fewer keys).
+//! a spline on fewer keys): closed, or open with natural ends or (on fewer keys, λ given) fitted
+//! end velocities.
 //!
 //! ```text
 //! "fit": { "smoothing": λ | "gcv" | { "rms": σ },   optional; default "gcv" with a key at every
@@ -270,7 +270,7 @@ fn check_params(params: &Map<String, Value>) -> Result<(), SceneError> {
         }
         return Err(field_error(
             format!("params.{k}"),
-            "does not apply with \"fit\": the fit sets the ends (natural with a key at every sample, fitted velocities with fewer keys)",
+            "does not apply with \"fit\": the fit sets the ends (natural, or fitted velocities on fewer keys)",
         ));
     }
     Ok(())

@@ -6,8 +6,8 @@
 //! and key reduction within an error bound.
 //!
 //! The problem (samples `yᵢ` at times `tᵢ`, weights `wᵢ > 0`): the curve `c` of the
-//! [`CubicSpline`] family (keys at key times; closed, or open with natural ends when every
-//! sample is a key and fitted end velocities when the keys are fewer) that minimises
+//! [`CubicSpline`] family (keys at key times; closed, or open with natural ends, or with fitted
+//! end velocities on fewer keys, [`FitKeys::Count`]) that minimises
 //!
 //! ```text
 //! F(c) = Σ wᵢ·d(c(tᵢ), yᵢ)² + λ·E(c),   E(c) = Σₖ ∫ |vₖ″(t)|² dt,
@@ -44,7 +44,7 @@ mod solve;
 
 use crate::ambient::Ambient;
 use crate::cubic::{CubicEnd, CubicSpline};
-use crate::error::{PointError, SplineError};
+use crate::error::{PointError, SolveError, SplineError};
 use crate::knots::Knots;
 use crate::manifold::Manifold;
 use crate::math;
@@ -73,8 +73,9 @@ pub enum FitKeys {
     Samples,
     /// This many keys among the sample times, as evenly spread over the samples as the times
     /// allow (the first and last sample always keys; closed: the first). With fewer keys than
-    /// samples an open fit's end velocities are fitted too ([`CubicEnd::Clamped`]): the
-    /// least-squares curve among all cubics on the keys.
+    /// samples and λ given, an open fit's end velocities are fitted too ([`CubicEnd::Clamped`]):
+    /// the least-squares curve among all cubics on the keys, where the end segments have
+    /// samples between their keys and that fit converges (else natural ends).
     Count(usize),
     /// The fewest keys among the sample times whose fit (as for [`Count`](Self::Count)) stays
     /// within this distance (radians) of every sample and of the samples' geodesic
@@ -107,7 +108,8 @@ pub struct FitReport {
     pub keys: usize,
     /// The key times (closed: and the return time).
     pub key_times: Vec<f64>,
-    /// Gauss–Newton iterations of the final fit (of every fit tried, for a chosen λ or keys).
+    /// Gauss–Newton iterations of the final fit (of every fit tried, for a chosen λ or keys, or
+    /// free ends that gave way to natural ones).
     pub iterations: usize,
     /// The effective degrees of freedom `m·tr A(λ)` (S^m; keys at every sample only).
     pub edf: Option<f64>,
@@ -459,9 +461,11 @@ impl<Q: Manifold> Samples<Q> {
     }
 
     /// The fit on the keys `idx` with the given smoothing, its report and the per-sample
-    /// distances, from starting keys `start` (default: the samples at the keys). With free end
-    /// velocities where [`free_ends`](Self::free_ends) allows them; natural ends when that fit
-    /// fails (a cubic segment cannot follow the samples: keys too far apart).
+    /// distances, from starting keys `start` (default: the samples at the keys). With λ given,
+    /// free end velocities where [`free_ends`](Self::free_ends) allows them, and natural ends
+    /// when that fit fails (a cubic segment cannot follow the samples, or λ's energy swamps
+    /// them); natural ends with λ searched for (a search's one-step trials need the better
+    /// conditioned problem).
     pub(crate) fn fitted(
         &self,
         idx: &[usize],
@@ -469,12 +473,19 @@ impl<Q: Manifold> Samples<Q> {
         start: Option<Vec<Q::Vector>>,
     ) -> Result<Fitted<Q::Vector>, SplineError> {
         let start = start.unwrap_or_else(|| idx.iter().map(|&i| self.points[i].clone()).collect());
-        if self.free_ends(idx)
-            && let Ok(f) = self.fitted_with(idx, smoothing, Start::Keys(start.clone(), true))
-        {
-            return Ok(f);
+        let mut tried = 0;
+        if matches!(smoothing, Smoothing::Lambda(_)) && self.free_ends(idx) {
+            match self.fitted_with(idx, smoothing, Start::Keys(start.clone(), true)) {
+                Ok(f) => return Ok(f),
+                Err(SplineError::Solve(SolveError::NoConvergence { iterations, .. })) => {
+                    tried = iterations;
+                }
+                Err(_) => {}
+            }
         }
-        self.fitted_with(idx, smoothing, Start::Keys(start, false))
+        let mut fitted = self.fitted_with(idx, smoothing, Start::Keys(start, false))?;
+        fitted.report.iterations += tried;
+        Ok(fitted)
     }
 
     /// [`fitted`](Self::fitted) from `start`.
@@ -680,12 +691,10 @@ impl<Q: Manifold> Samples<Q> {
                 side = 1;
             }
         }
-        Err(SplineError::Solve(
-            crate::error::SolveError::NoConvergence {
-                iterations: 200,
-                residual: f64::NAN,
-            },
-        ))
+        Err(SplineError::Solve(SolveError::NoConvergence {
+            iterations: 200,
+            residual: f64::NAN,
+        }))
     }
 
     /// A range of `ln λ` over which the fit goes from nearly interpolating (`tr A ≥ N − 0.1`)

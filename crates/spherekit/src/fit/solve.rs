@@ -10,9 +10,9 @@
 //! `s·√λ·(2b + 3c, √3·c)/h^{3/2}` per segment (whose squares sum to `s²λ∫|v″|²`, `s` the speed
 //! scale); constraints: the tangential acceleration jump at every interior key (every key of a
 //! closed curve), and the tangential acceleration at the two ends of an open curve with a key at
-//! every sample (natural ends). With fewer keys than samples an open curve's end velocities are
-//! free (the least-squares curve among all cubics on the keys, clamped at the fitted
-//! velocities): no end rows, and the end velocities' steps are taken with the keys'. Every residual of segment `k` depends on keys `k` and `k + 1` only, every constraint
+//! every sample (natural ends). On fewer keys an open curve's end velocities may be free
+//! ([`Samples::free_ends`]; the least-squares curve among all cubics on the keys, clamped at the
+//! fitted velocities): no end rows, and the end velocities' steps are taken with the keys'. Every residual of segment `k` depends on keys `k` and `k + 1` only, every constraint
 //! row on keys `k − 1 … k + 1`, so the KKT matrix ordered by key, `[δpₖ, δVₖ, μₖ]`, is block
 //! tridiagonal (cyclic when closed) with blocks of `3d` (`d` the tangent dimension), factorised
 //! by [`BlockTridiagonal`] in O(n). The Jacobian of each segment's residuals and constraints is
@@ -20,8 +20,9 @@
 //!
 //! Each iterate is feasible: the keys are retracted (`pₖ ← Exp_{pₖ}(α·Eₖδpₖ)`) and the
 //! velocities re-solved by the cubic's own construction, so the step is the Gauss–Newton step
-//! of the objective as a function of the keys alone (the KKT elimination of `δV` is the exact
-//! derivative of the velocity solve), computed in O(n) without its dense Jacobian. A
+//! of the objective as a function of the keys alone (with free ends, of the keys and the two end
+//! velocities; the KKT elimination of `δV` is the exact derivative of the velocity solve),
+//! computed in O(n) without its dense Jacobian. A
 //! backtracking line search on the objective keeps every step a descent.
 
 use crate::ambient::Ambient;
@@ -123,12 +124,14 @@ impl<P: Manifold> Samples<P> {
     }
 
     /// Whether the fit on the keys `idx` may have free end velocities: an open curve whose first
-    /// and last segments have samples between their keys, which the end velocities move (the
-    /// least-squares curve among all cubics on the keys; with a key at every sample the ends are
-    /// natural, the smoothing spline's own end condition).
+    /// and last segments have samples between their keys, which the end velocities move (two
+    /// at least when one segment has both ends), so that the samples determine them: the
+    /// least-squares curve among all cubics on the keys. (With a key at every sample the ends
+    /// are natural, the smoothing spline's own end condition.)
     pub(crate) fn free_ends(&self, idx: &[usize]) -> bool {
         let m = idx.len();
-        !self.closed && m >= 2 && idx[1] > idx[0] + 1 && idx[m - 1] > idx[m - 2] + 1
+        let inside = |k: usize| idx[k + 1] - idx[k] - 1;
+        !self.closed && m >= 2 && inside(0) >= 1 && inside(m - 2) >= 1 && (m > 2 || inside(0) >= 2)
     }
 
     /// The cubic through the keys `p` at the key times of `idx`: with the end velocities `ends`
@@ -263,7 +266,7 @@ impl<P: Manifold> Samples<P> {
                 return Err(no_convergence(iterations, objective));
             };
             // The decrease the linear model predicts, −xᵀJᵀR (≥ 0 for the constrained
-            // Gauss–Newton step).
+            // Gauss–Newton step, up to rounding).
             let predicted = step.predicted;
             if !(predicted.is_finite()) {
                 return Err(no_convergence(iterations, objective));
@@ -271,6 +274,12 @@ impl<P: Manifold> Samples<P> {
             // The objective's rounding has an absolute part too: residuals of about 1e-13 rad
             // (exact data, a fit through every sample) leave nothing to decrease.
             let floor = 1e-26 * self.weights.iter().sum::<f64>();
+            // A free-end step that the model does not predict to descend: the system is too
+            // ill-conditioned there (λ's energy swamping the samples with only a few keys),
+            // and the caller fits with natural ends instead.
+            if free && predicted < -(ROUNDING * objective + floor) {
+                return Err(no_convergence(iterations, objective));
+            }
             let converged = predicted <= DECREMENT * objective + floor;
             // Backtracking: the full step, then halves, until the objective decreases by a
             // quarter of the predicted amount (once converged, the last step is taken when it
