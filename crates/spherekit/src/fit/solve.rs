@@ -12,8 +12,9 @@
 //! closed curve), and the tangential acceleration at the two ends of an open curve with a key at
 //! every sample (natural ends). On fewer keys an open curve's end velocities may be free
 //! ([`Samples::free_ends`]; the least-squares curve among all cubics on the keys, clamped at the
-//! fitted velocities): no end rows, and the end velocities' steps are taken with the keys'. Every residual of segment `k` depends on keys `k` and `k + 1` only, every constraint
-//! row on keys `k − 1 … k + 1`, so the KKT matrix ordered by key, `[δpₖ, δVₖ, μₖ]`, is block
+//! fitted velocities): no end rows, and the end velocities' steps are taken with the keys'.
+//! Every residual of segment `k` depends on keys `k` and `k + 1` only, every constraint row on
+//! keys `k − 1 … k + 1`, so the KKT matrix ordered by key, `[δpₖ, δVₖ, μₖ]`, is block
 //! tridiagonal (cyclic when closed) with blocks of `3d` (`d` the tangent dimension), factorised
 //! by [`BlockTridiagonal`] in O(n). The Jacobian of each segment's residuals and constraints is
 //! taken by central differences in its `4d` unknowns.
@@ -22,8 +23,8 @@
 //! velocities re-solved by the cubic's own construction, so the step is the Gauss–Newton step
 //! of the objective as a function of the keys alone (with free ends, of the keys and the two end
 //! velocities; the KKT elimination of `δV` is the exact derivative of the velocity solve),
-//! computed in O(n) without its dense Jacobian. A
-//! backtracking line search on the objective keeps every step a descent.
+//! computed in O(n) without its dense Jacobian. A backtracking line search on the objective
+//! keeps every step a descent.
 
 use crate::ambient::Ambient;
 use crate::banded::BlockTridiagonal;
