@@ -10,10 +10,13 @@ _Times = Union[float, npt.ArrayLike]
 # A Rotation, or quaternions [x, y, z, w] ([w, x, y, z] with scalar_first=True), shape (n, 4).
 _Rotations = Union[Rotation, npt.ArrayLike]
 
-class RotationSpline:
+class _Keyed:
+    """What the drop-ins share: their times and their keys (samples) as given."""
     times: npt.NDArray[np.float64]
     @property
     def rotations(self) -> Rotation: ...
+
+class RotationSpline(_Keyed):
     def __init__(
         self,
         times: npt.ArrayLike,
@@ -32,10 +35,7 @@ class RotationSpline:
     @overload
     def __call__(self, times: _Times, order: Literal[1, 2]) -> npt.NDArray[np.float64]: ...
 
-class SmoothRotationSpline:
-    times: npt.NDArray[np.float64]
-    @property
-    def rotations(self) -> Rotation: ...
+class SmoothRotationSpline(_Keyed):
     @property
     def fit_info(self) -> dict[str, Any]: ...
     def __init__(
@@ -56,11 +56,8 @@ class SmoothRotationSpline:
     @overload
     def __call__(self, times: _Times, order: Literal[1, 2]) -> npt.NDArray[np.float64]: ...
 
-class Slerp:
-    times: npt.NDArray[np.float64]
+class Slerp(_Keyed):
     timedelta: npt.NDArray[np.float64]
-    @property
-    def rotations(self) -> Rotation: ...
     @property
     def rotvecs(self) -> npt.NDArray[np.float64]: ...
     def __init__(self, times: npt.ArrayLike, rotations: _Rotations, *, scalar_first: bool = False) -> None: ...
